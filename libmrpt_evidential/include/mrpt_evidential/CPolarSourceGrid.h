@@ -1,0 +1,91 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
+ * The polar SourceGrid: one row of range bins per angular sector of a scan,
+ * each row built by a sector model (SensorModel.h). */
+#pragma once
+
+#include <mrpt_evidential/Mass.h>
+#include <mrpt_evidential/SensorModel.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace mrpt::obs
+{
+class CObservation2DRangeScan;
+}
+
+namespace mrpt_evidential
+{
+/** How a scan is cut into a polar SourceGrid. */
+struct TSourceGridOptions
+{
+	SensorModelParams sensorModel;
+	/** Angular width of a sector, radians, >= 0. 0 gives one sector per beam;
+	 * a width below the beam spacing is raised to it (a sector never holds
+	 * less than one beam). */
+	double sectorWidth = 0.0;
+	/** Length of every sector's row, metres, > 0. A return beyond it proves the
+	 * row free and nothing occupied. */
+	double maxRange = 20.0;
+	/** Length of a range bin, metres, > 0 (the map uses its cell size). */
+	double binSize = 0.05;
+	/** What a beam without a return means. false (default): nothing, the beam
+	 * may have hit glass, black or a sensor fault. true: free space up to
+	 * maxRange, like COccupancyGridMap2D's considerInvalidRangesAsFreeSpace. */
+	bool invalidRangesAsFree = false;
+
+	/** \throws std::invalid_argument naming the first option out of range. */
+	void validate() const;
+};
+
+/** The polar SourceGrid of one 2-D scan, in the sensor's frame.
+ *
+ * Sector s is centred at angle firstSectorAngle() + s * sectorSpacing()
+ * (radians, counterclockwise, 0 = the sensor's forward axis), so angles grow
+ * with s whatever the scan's direction (rightToLeft). Bin b covers ranges
+ * [b binSize, (b + 1) binSize). Each beam goes to the sector nearest to its
+ * angle; its range is an impact of that sector when it is valid: flagged
+ * valid, finite and > 0. Other ranges are no return (see
+ * TSourceGridOptions::invalidRangesAsFree). */
+class CPolarSourceGrid
+{
+   public:
+	/** Rebuilds the grid from a scan, reusing the storage.
+	 * \throws std::invalid_argument if the options are invalid, or the scan's
+	 *  aperture is not in (0, 2 pi] while it has more than one beam. */
+	void build(
+		const mrpt::obs::CObservation2DRangeScan& scan,
+		const TSourceGridOptions& options);
+
+	std::size_t sectorCount() const { return m_sectorCount; }
+	std::size_t binCount() const { return m_binCount; }
+	double binSize() const { return m_binSize; }
+	/** Angle of sector 0's centre, radians. */
+	double firstSectorAngle() const { return m_firstAngle; }
+	/** Angle between neighbouring sector centres, radians (the scan's aperture
+	 * for a single-beam scan). */
+	double sectorSpacing() const { return m_spacing; }
+	double sectorAngle(std::size_t s) const
+	{
+		return m_firstAngle + static_cast<double>(s) * m_spacing;
+	}
+	/** True when at least one beam of the sector gave evidence (a valid return,
+	 * or an invalid one read as free). A sector that is not observed is
+	 * vacuous. */
+	bool sectorObserved(std::size_t s) const { return m_observed.at(s) != 0; }
+
+	/** The masses of one sector's row, binCount() of them.
+	 * \throws std::out_of_range if s >= sectorCount(). */
+	const Mass* sectorRow(std::size_t s) const;
+	/** \throws std::out_of_range if a coordinate is out of range. */
+	const Mass& at(std::size_t sector, std::size_t bin) const;
+
+   private:
+	std::size_t m_sectorCount = 0, m_binCount = 0;
+	double m_binSize = 0.0, m_firstAngle = 0.0, m_spacing = 0.0;
+	std::vector<Mass> m_masses;  //!< row-major, one row per sector
+	std::vector<char> m_observed;
+	std::vector<std::vector<double>> m_impacts;  //!< per sector, reused
+};
+
+}  // namespace mrpt_evidential

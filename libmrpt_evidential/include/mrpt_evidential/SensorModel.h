@@ -1,0 +1,87 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
+ * The lidar inverse sensor models of one angular sector (standard library
+ * only; the MRPT-facing polar grid is in CPolarSourceGrid.h). */
+#pragma once
+
+#include <mrpt_evidential/Mass.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace mrpt_evidential
+{
+/** The three lidar inverse sensor models (see doc/sensor-models.md). */
+enum class SensorModel
+{
+	/** Free before the nearest impact, muO in every bin holding an impact,
+	 * whatever the number of impacts there (no reinforcement). */
+	MultiEcho,
+	/** Impact and mask mass functions per impact, combined conjunctively and
+	 * disjunctively: every extra impact in a bin adds occupied evidence, every
+	 * impact adds free evidence before the nearest one. */
+	ReinforcedMultiEcho,
+	/** As ReinforcedMultiEcho, with each impact's occupied evidence spread over
+	 * [R - d, R + d] along the beam (d = imprecision) by a profile. */
+	ImpreciseMultiEcho
+};
+
+/** How the imprecise model spreads an impact's occupied evidence. */
+enum class ImprecisionProfile
+{
+	Box,  //!< muO over the whole interval (the discrete imprecise model)
+	Gaussian  //!< muO * exp(-x^2 / (2 sigma^2)) with sigma = d / 2
+};
+
+/** Parameters of a sector model. */
+struct SensorModelParams
+{
+	SensorModel model = SensorModel::ReinforcedMultiEcho;
+	/** Detection rate: the free mass one beam gives to a bin it crosses,
+	 * in [0, 1]. */
+	double muF = 0.7;
+	/** True-positive rate (1 - false alarm rate): the occupied mass one impact
+	 * gives to its bin, in [0, 1]. */
+	double muO = 0.9;
+	/** Half-width d of an impact's interval, metres, >= 0 (ImpreciseMultiEcho
+	 * only). Below half a bin the model equals ReinforcedMultiEcho. */
+	double imprecision = 0.0;
+	ImprecisionProfile profile = ImprecisionProfile::Box;
+
+	/** \throws std::invalid_argument naming the first parameter out of range
+	 * (muF or muO outside [0, 1], imprecision negative or not finite). */
+	void validate() const;
+};
+
+/** One sector's row of masses, bin b covering ranges [b binSize,
+ * (b + 1) binSize). `impactRanges` holds the ranges of every impact of the
+ * sector (echoes, layers or beams), in any order, duplicates allowed; +inf
+ * stands for a beam that crossed every bin without a return (free evidence,
+ * no impact). An impact beyond the last bin also only gives free evidence.
+ * With no impacts every bin is vacuous.
+ *
+ * Uses the closed forms of the models (doc/sensor-models.md): O(bins +
+ * impacts x band width).
+ * \throws std::invalid_argument if the parameters are invalid, binSize is not
+ *  a positive finite number, or an impact range is NaN or negative. */
+std::vector<Mass> sectorMasses(
+	const SensorModelParams& params, const std::vector<double>& impactRanges,
+	double binSize, std::size_t nBins);
+
+/** sectorMasses() writing into out[0 .. nBins-1] (no allocation), for callers
+ * that build many sectors. Same contract. */
+void sectorMassesInto(
+	const SensorModelParams& params, const double* impactRanges,
+	std::size_t nImpacts, double binSize, std::size_t nBins, Mass* out);
+
+/** The seed's literal construction of the same row: for each impact, an impact
+ * mass function and a mask mass function over the bins; the impact functions
+ * are combined conjunctively from the vacuous mass, the masks disjunctively
+ * from the degenerate mass, and the row is the disjunction of the two. It is
+ * O(impacts x bins) and serves as the reference the closed form is tested
+ * against. MultiEcho is not built by combination in the seed; for it this
+ * returns sectorMasses(). Same contract as sectorMasses(). */
+std::vector<Mass> sectorMassesByCombination(
+	const SensorModelParams& params, const std::vector<double>& impactRanges,
+	double binSize, std::size_t nBins);
+
+}  // namespace mrpt_evidential

@@ -1,0 +1,115 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT. */
+
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt_evidential/CPolarSourceGrid.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace mrpt_evidential
+{
+void TSourceGridOptions::validate() const
+{
+	sensorModel.validate();
+	if (!(sectorWidth >= 0.0 && sectorWidth <= 2 * M_PI))
+		throw std::invalid_argument(
+			"sector width must be in [0, 2 pi] rad, got " +
+			std::to_string(sectorWidth));
+	if (!(maxRange > 0.0 && std::isfinite(maxRange)))
+		throw std::invalid_argument(
+			"maxRange must be a positive finite number, got " +
+			std::to_string(maxRange));
+	if (!(binSize > 0.0 && std::isfinite(binSize)))
+		throw std::invalid_argument(
+			"range bin size must be a positive finite number, got " +
+			std::to_string(binSize));
+	if (maxRange / binSize > 1e7)
+		throw std::invalid_argument(
+			"maxRange / bin size gives more than 1e7 bins per sector");
+}
+
+void CPolarSourceGrid::build(
+	const mrpt::obs::CObservation2DRangeScan& scan,
+	const TSourceGridOptions& options)
+{
+	options.validate();
+	const std::size_t nBeams = scan.getScanSize();
+	const double aperture = scan.aperture;
+	if (nBeams > 1 && !(aperture > 0.0 && aperture <= 2 * M_PI + 1e-6))
+		throw std::invalid_argument(
+			"scan aperture must be in (0, 2 pi] rad, got " +
+			std::to_string(aperture));
+
+	const double beamSpacing =
+		nBeams > 1 ? aperture / static_cast<double>(nBeams - 1) : aperture;
+	m_spacing = std::max(options.sectorWidth, beamSpacing);
+	if (nBeams > 1)
+	{
+		m_firstAngle = -0.5 * aperture;
+		m_sectorCount =
+			static_cast<std::size_t>(std::lround(aperture / m_spacing)) + 1;
+	}
+	else
+	{
+		m_firstAngle = 0.0;
+		m_sectorCount = nBeams;
+	}
+	m_binSize = options.binSize;
+	m_binCount =
+		static_cast<std::size_t>(std::ceil(options.maxRange / options.binSize));
+
+	m_impacts.resize(m_sectorCount);
+	for (auto& impacts : m_impacts) impacts.clear();
+	m_observed.assign(m_sectorCount, 0);
+
+	constexpr double kNoReturn = std::numeric_limits<double>::infinity();
+	for (std::size_t i = 0; i < nBeams; ++i)
+	{
+		std::size_t sector = 0;
+		if (nBeams > 1)
+		{
+			const double position =
+				(scan.getScanAngle(i) - m_firstAngle) / m_spacing;
+			sector = std::min<std::size_t>(
+				m_sectorCount - 1,
+				static_cast<std::size_t>(std::max(0.0, std::round(position))));
+		}
+		const double r = scan.getScanRange(i);
+		const bool valid = scan.getScanRangeValidity(i) && std::isfinite(r) &&
+			r > 0.0;
+		if (valid)
+			m_impacts[sector].push_back(r);
+		else if (options.invalidRangesAsFree)
+			m_impacts[sector].push_back(kNoReturn);
+		else
+			continue;
+		m_observed[sector] = 1;
+	}
+
+	m_masses.resize(m_sectorCount * m_binCount);
+	for (std::size_t s = 0; s < m_sectorCount; ++s)
+		sectorMassesInto(
+			options.sensorModel, m_impacts[s].data(), m_impacts[s].size(),
+			m_binSize, m_binCount, m_masses.data() + s * m_binCount);
+}
+
+const Mass* CPolarSourceGrid::sectorRow(std::size_t s) const
+{
+	if (s >= m_sectorCount)
+		throw std::out_of_range(
+			"sector " + std::to_string(s) + " of " +
+			std::to_string(m_sectorCount));
+	return m_masses.data() + s * m_binCount;
+}
+
+const Mass& CPolarSourceGrid::at(std::size_t sector, std::size_t bin) const
+{
+	if (bin >= m_binCount)
+		throw std::out_of_range(
+			"bin " + std::to_string(bin) + " of " + std::to_string(m_binCount));
+	return sectorRow(sector)[bin];
+}
+
+}  // namespace mrpt_evidential

@@ -1,0 +1,180 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT. */
+
+#include <mrpt_evidential/SensorModel.h>
+#include <mrpt_evidential/combination.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace mrpt_evidential
+{
+void SensorModelParams::validate() const
+{
+	const auto inUnitInterval = [](double v) { return v >= 0.0 && v <= 1.0; };
+	if (!inUnitInterval(muF))
+		throw std::invalid_argument(
+			"muF must be in [0, 1], got " + std::to_string(muF));
+	if (!inUnitInterval(muO))
+		throw std::invalid_argument(
+			"muO must be in [0, 1], got " + std::to_string(muO));
+	if (!(imprecision >= 0.0 && std::isfinite(imprecision)))
+		throw std::invalid_argument(
+			"imprecision must be a finite number >= 0, got " +
+			std::to_string(imprecision));
+}
+
+namespace
+{
+void checkArguments(
+	const SensorModelParams& params, const double* impactRanges,
+	std::size_t nImpacts, double binSize)
+{
+	params.validate();
+	if (!(binSize > 0.0 && std::isfinite(binSize)))
+		throw std::invalid_argument(
+			"range bin size must be a positive finite number, got " +
+			std::to_string(binSize));
+	for (std::size_t i = 0; i < nImpacts; ++i)
+		if (!(impactRanges[i] >= 0.0))
+			throw std::invalid_argument(
+				"impact range must be >= 0 (or +inf for no return), got " +
+				std::to_string(impactRanges[i]));
+}
+
+/** Index of the bin holding range r, or nBins when r lies beyond the last
+ * bin (+inf included). Compared as doubles so that huge ranges never
+ * overflow the conversion. */
+std::size_t binOf(double r, double binSize, std::size_t nBins)
+{
+	const double x = r / binSize;
+	return x < static_cast<double>(nBins) ? static_cast<std::size_t>(x) : nBins;
+}
+
+/** The bins an impact gives occupied evidence to, [first, last] inclusive;
+ * first == nBins when they all lie beyond the grid. For the imprecise model
+ * these are the bins whose centre lies within d of the impact, plus the bin
+ * holding the impact itself, so that d below half a bin gives exactly one bin
+ * as in the reinforced model. */
+struct Band
+{
+	std::size_t first, last;
+	std::size_t own;  //!< the bin holding the impact (nBins: beyond the grid)
+};
+
+Band occupiedBand(
+	const SensorModelParams& p, double r, double binSize, std::size_t nBins)
+{
+	const std::size_t own = binOf(r, binSize, nBins);
+	if (p.model != SensorModel::ImpreciseMultiEcho || p.imprecision == 0.0 ||
+		!std::isfinite(r))
+		return {own, own, own};
+	const double maxIndex = static_cast<double>(nBins);
+	const double lo = std::ceil((r - p.imprecision) / binSize - 0.5);
+	const double hi = std::floor((r + p.imprecision) / binSize - 0.5);
+	const auto clampIndex = [&](double i) {
+		return static_cast<std::size_t>(std::clamp(i, 0.0, maxIndex));
+	};
+	if (hi < lo) return {own, own, own};
+	return {std::min(own, clampIndex(lo)), std::max(own, clampIndex(hi)), own};
+}
+
+/** Profile weight g of bin b for an impact at range r (g = 1 at the impact's
+ * own bin). */
+double profileWeight(
+	const SensorModelParams& p, double r, const Band& band, std::size_t b,
+	double binSize)
+{
+	if (p.model != SensorModel::ImpreciseMultiEcho ||
+		p.profile == ImprecisionProfile::Box || b == band.own)
+		return 1.0;
+	// sigma = d / 2, so x^2 / (2 sigma^2) = 2 x^2 / d^2.
+	const double x = (static_cast<double>(b) + 0.5) * binSize - r;
+	return std::exp(-2.0 * x * x / (p.imprecision * p.imprecision));
+}
+
+}  // namespace
+
+void sectorMassesInto(
+	const SensorModelParams& params, const double* impactRanges,
+	std::size_t nImpacts, double binSize, std::size_t nBins, Mass* out)
+{
+	checkArguments(params, impactRanges, nImpacts, binSize);
+	std::fill(out, out + nBins, Mass::vacuous());
+	if (nImpacts == 0) return;
+
+	std::size_t firstOccupied = nBins;
+	for (std::size_t i = 0; i < nImpacts; ++i)
+	{
+		const double r = impactRanges[i];
+		const Band band = occupiedBand(params, r, binSize, nBins);
+		firstOccupied = std::min(firstOccupied, band.first);
+		if (params.model == SensorModel::MultiEcho)
+		{
+			if (band.first < nBins) out[band.first] = Mass::simpleOccupied(params.muO);
+			continue;
+		}
+		// Reinforcement: the occupied mass of a bin is 1 - prod(1 - muO g_i)
+		// over the impacts whose band holds it; accumulate the product in
+		// m(Omega) and turn it into m(O) below.
+		const std::size_t end = std::min(band.last + 1, nBins);
+		for (std::size_t b = band.first; b < end; ++b)
+			out[b].unknown *= 1.0 - params.muO * profileWeight(params, r, band, b, binSize);
+	}
+	if (params.model != SensorModel::MultiEcho)
+		for (std::size_t b = firstOccupied; b < nBins; ++b)
+			out[b].occupied = 1.0 - out[b].unknown;
+
+	// Every beam crossed the bins before the nearest band.
+	const double freeWeight = params.model == SensorModel::MultiEcho
+		? params.muF
+		: 1.0 - std::pow(1.0 - params.muF, static_cast<double>(nImpacts));
+	std::fill(out, out + firstOccupied, Mass::simpleFree(freeWeight));
+}
+
+std::vector<Mass> sectorMasses(
+	const SensorModelParams& params, const std::vector<double>& impactRanges,
+	double binSize, std::size_t nBins)
+{
+	std::vector<Mass> row(nBins);
+	sectorMassesInto(
+		params, impactRanges.data(), impactRanges.size(), binSize, nBins,
+		row.data());
+	return row;
+}
+
+std::vector<Mass> sectorMassesByCombination(
+	const SensorModelParams& params, const std::vector<double>& impactRanges,
+	double binSize, std::size_t nBins)
+{
+	if (params.model == SensorModel::MultiEcho)
+		return sectorMasses(params, impactRanges, binSize, nBins);
+	checkArguments(params, impactRanges.data(), impactRanges.size(), binSize);
+
+	std::vector<Mass> cumulative(nBins, Mass::vacuous());
+	std::vector<Mass> mask(nBins, Mass::degenerate());
+	const Mass maskBehind{0.0, 0.0, 1.0, 0.0};
+	for (const double r : impactRanges)
+	{
+		const Band band = occupiedBand(params, r, binSize, nBins);
+		for (std::size_t b = 0; b < nBins; ++b)
+		{
+			Mass impact = Mass::vacuous();
+			if (b < band.first)
+				impact = Mass::simpleFree(params.muF);
+			else if (b <= band.last)
+				impact = Mass::simpleOccupied(
+					params.muO * profileWeight(params, r, band, b, binSize));
+			cumulative[b] = conjunctive(cumulative[b], impact);
+			mask[b] = disjunctive(
+				mask[b], b < band.first ? Mass::degenerate() : maskBehind);
+		}
+	}
+	std::vector<Mass> row(nBins);
+	for (std::size_t b = 0; b < nBins; ++b)
+		row[b] = disjunctive(cumulative[b], mask[b]);
+	return row;
+}
+
+}  // namespace mrpt_evidential

@@ -1,0 +1,74 @@
+/* Shared helpers of the unit tests: random masses and mass comparisons. */
+#pragma once
+
+#include <gtest/gtest.h>
+#include <mrpt_evidential/Mass.h>
+
+#include <cmath>
+#include <ostream>
+#include <random>
+#include <vector>
+
+namespace mrpt_evidential
+{
+inline std::ostream& operator<<(std::ostream& os, const Mass& m)
+{
+	return os << "{conflict " << m.conflict << ", free " << m.free
+			  << ", occupied " << m.occupied << ", unknown " << m.unknown << "}";
+}
+}  // namespace mrpt_evidential
+
+namespace mrpt_evidential::test
+{
+/** Random valid masses from a fixed seed. One draw in eight puts some of the
+ * masses at exactly 0, so that the corners of the simplex are exercised. */
+class MassGenerator
+{
+   public:
+	explicit MassGenerator(unsigned seed = 20261122) : m_rng(seed) {}
+
+	/** withConflict = false gives normal masses (m(empty) = 0). */
+	Mass operator()(bool withConflict = true)
+	{
+		std::uniform_real_distribution<double> u(0.0, 1.0);
+		double v[4];
+		for (double& x : v) x = -std::log(1.0 - u(m_rng));  // flat on the simplex
+		if (!withConflict) v[0] = 0.0;
+		if (u(m_rng) < 0.125) v[1 + static_cast<int>(u(m_rng) * 2.999)] = 0.0;
+		double total = v[0] + v[1] + v[2] + v[3];
+		if (total == 0.0) v[3] = total = 1.0;
+		return {v[0] / total, v[1] / total, v[2] / total, v[3] / total};
+	}
+
+	std::vector<Mass> many(std::size_t n, bool withConflict = true)
+	{
+		std::vector<Mass> out;
+		for (std::size_t i = 0; i < n; ++i) out.push_back((*this)(withConflict));
+		return out;
+	}
+
+	std::mt19937& rng() { return m_rng; }
+
+   private:
+	std::mt19937 m_rng;
+};
+
+inline ::testing::AssertionResult massNear(
+	const Mass& actual, const Mass& expected, double tol)
+{
+	if (maxAbsDifference(actual, expected) <= tol)
+		return ::testing::AssertionSuccess();
+	return ::testing::AssertionFailure()
+		<< actual << " differs from " << expected << " by "
+		<< maxAbsDifference(actual, expected) << " > " << tol;
+}
+
+}  // namespace mrpt_evidential::test
+
+#define EXPECT_MASS_NEAR(actual, expected, tol) \
+	EXPECT_TRUE(::mrpt_evidential::test::massNear((actual), (expected), (tol)))
+
+/** For loops over grid cells: stops at the first cell that differs. */
+#define ASSERT_MASS_NEAR_OR(actual, expected, row, col)                        \
+	ASSERT_TRUE(::mrpt_evidential::test::massNear((actual), (expected), 1e-12)) \
+		<< "at (" << (row) << ", " << (col) << ")"

@@ -1,0 +1,196 @@
+/* The polar SourceGrid of synthetic MRPT scans. */
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt_evidential/CPolarSourceGrid.h>
+
+#include <cmath>
+#include <limits>
+
+#include "test_helpers.h"
+
+using namespace mrpt_evidential;
+using mrpt::obs::CObservation2DRangeScan;
+
+namespace
+{
+constexpr double kMuF = 0.7, kMuO = 0.9, kBin = 0.05;
+
+/** The range beam i returns, as the scan stores it (float). */
+double beamRange(std::size_t i)
+{
+	return static_cast<float>(2.0 + 0.01 * static_cast<double>(i));
+}
+
+/** 181 beams over 180 degrees; beam i returns at 2 + 0.01 i metres. */
+CObservation2DRangeScan syntheticScan(bool rightToLeft = true)
+{
+	CObservation2DRangeScan scan;
+	scan.aperture = static_cast<float>(M_PI);
+	scan.rightToLeft = rightToLeft;
+	scan.maxRange = 30.0f;
+	scan.resizeScan(181);
+	for (std::size_t i = 0; i < 181; ++i)
+	{
+		scan.setScanRange(i, static_cast<float>(beamRange(i)));
+		scan.setScanRangeValidity(i, true);
+	}
+	return scan;
+}
+
+TSourceGridOptions options()
+{
+	TSourceGridOptions o;
+	o.sensorModel.model = SensorModel::ReinforcedMultiEcho;
+	o.sensorModel.muF = kMuF;
+	o.sensorModel.muO = kMuO;
+	o.binSize = kBin;
+	o.maxRange = 10.0;
+	return o;
+}
+
+std::size_t binOf(double r) { return static_cast<std::size_t>(r / kBin); }
+
+/** Free before the impact's bin, occupied at it, vacuous behind. */
+void expectSingleImpactRow(const CPolarSourceGrid& grid, std::size_t s, double r)
+{
+	const std::size_t hit = binOf(r);
+	for (std::size_t b = 0; b < grid.binCount(); ++b)
+	{
+		const Mass& m = grid.at(s, b);
+		ASSERT_TRUE(m.isValid());
+		if (b < hit)
+			ASSERT_MASS_NEAR_OR(m, Mass::simpleFree(kMuF), s, b);
+		else if (b == hit)
+			ASSERT_MASS_NEAR_OR(m, Mass::simpleOccupied(kMuO), s, b);
+		else
+			ASSERT_MASS_NEAR_OR(m, Mass::vacuous(), s, b);
+	}
+}
+}  // namespace
+
+TEST(PolarSourceGrid, OneSectorPerBeam)
+{
+	CPolarSourceGrid grid;
+	grid.build(syntheticScan(), options());
+	ASSERT_EQ(grid.sectorCount(), 181u);
+	EXPECT_EQ(grid.binCount(), 200u);
+	EXPECT_NEAR(grid.firstSectorAngle(), -M_PI / 2, 1e-6);
+	EXPECT_NEAR(grid.sectorSpacing(), M_PI / 180, 1e-6);
+	for (std::size_t s = 0; s < 181; ++s)
+	{
+		EXPECT_TRUE(grid.sectorObserved(s));
+		expectSingleImpactRow(grid, s, beamRange(s));
+	}
+}
+
+TEST(PolarSourceGrid, SectorAnglesGrowWhateverTheScanDirection)
+{
+	CPolarSourceGrid grid;
+	grid.build(syntheticScan(false), options());
+	// Clockwise scan: beam 0 is at +90 degrees, in the last sector.
+	for (std::size_t s = 0; s < 181; ++s)
+		expectSingleImpactRow(grid, s, beamRange(180 - s));
+}
+
+TEST(PolarSourceGrid, InvalidRangesProveNothingByDefault)
+{
+	CObservation2DRangeScan scan = syntheticScan();
+	scan.setScanRangeValidity(10, false);
+	scan.setScanRange(20, std::numeric_limits<float>::quiet_NaN());
+	scan.setScanRange(30, -1.0f);
+	scan.setScanRange(40, 0.0f);
+	CPolarSourceGrid grid;
+	grid.build(scan, options());
+	for (const std::size_t s : {10u, 20u, 30u, 40u})
+	{
+		EXPECT_FALSE(grid.sectorObserved(s)) << s;
+		for (std::size_t b = 0; b < grid.binCount(); ++b)
+			ASSERT_EQ(grid.at(s, b), Mass::vacuous());
+	}
+	expectSingleImpactRow(grid, 11, beamRange(11));
+
+	TSourceGridOptions asFree = options();
+	asFree.invalidRangesAsFree = true;
+	grid.build(scan, asFree);
+	for (const std::size_t s : {10u, 20u, 30u, 40u})
+	{
+		EXPECT_TRUE(grid.sectorObserved(s));
+		for (std::size_t b = 0; b < grid.binCount(); ++b)
+			ASSERT_MASS_NEAR_OR(grid.at(s, b), Mass::simpleFree(kMuF), s, b);
+	}
+}
+
+TEST(PolarSourceGrid, ReturnsBeyondMaxRangeOnlyProveFreeSpace)
+{
+	CObservation2DRangeScan scan = syntheticScan();
+	scan.setScanRange(5, 25.0f);
+	CPolarSourceGrid grid;
+	grid.build(scan, options());
+	for (std::size_t b = 0; b < grid.binCount(); ++b)
+		ASSERT_MASS_NEAR_OR(grid.at(5, b), Mass::simpleFree(kMuF), 5, b);
+}
+
+TEST(PolarSourceGrid, WideSectorsGatherSeveralBeams)
+{
+	TSourceGridOptions o = options();
+	o.sectorWidth = 3 * M_PI / 180;  // three beams each
+	CPolarSourceGrid grid;
+	grid.build(syntheticScan(), o);
+	ASSERT_EQ(grid.sectorCount(), 61u);
+	EXPECT_NEAR(grid.sectorSpacing(), o.sectorWidth, 1e-9);
+	// Sector 10 is centred on beam 30 and holds beams 29, 30 and 31.
+	const double ranges[] = {beamRange(29), beamRange(30), beamRange(31)};
+	const Mass* row = grid.sectorRow(10);
+	const double free3 = 1 - std::pow(1 - kMuF, 3);
+	for (std::size_t b = 0; b < binOf(ranges[0]); ++b)
+		ASSERT_MASS_NEAR_OR(row[b], Mass::simpleFree(free3), 10, b);
+	// Each impact's bin holds muO, or 1 - (1 - muO)^2 where two share a bin.
+	std::vector<int> hits(grid.binCount(), 0);
+	for (const double r : ranges) ++hits[binOf(r)];
+	for (std::size_t b = binOf(ranges[0]); b < grid.binCount(); ++b)
+	{
+		const double o = 1 - std::pow(1 - kMuO, hits[b]);
+		ASSERT_MASS_NEAR_OR(row[b], Mass::simpleOccupied(o), 10, b);
+	}
+	// A width below the beam spacing is raised to it.
+	o.sectorWidth = 0.1 * M_PI / 180;
+	grid.build(syntheticScan(), o);
+	EXPECT_EQ(grid.sectorCount(), 181u);
+}
+
+TEST(PolarSourceGrid, EmptyAndSingleBeamScans)
+{
+	CObservation2DRangeScan scan;
+	CPolarSourceGrid grid;
+	grid.build(scan, options());
+	EXPECT_EQ(grid.sectorCount(), 0u);
+
+	scan.resizeScan(1);
+	scan.setScanRange(0, 1.0f);
+	scan.setScanRangeValidity(0, true);
+	grid.build(scan, options());
+	ASSERT_EQ(grid.sectorCount(), 1u);
+	EXPECT_EQ(grid.sectorAngle(0), 0.0);
+	expectSingleImpactRow(grid, 0, 1.0);
+}
+
+TEST(PolarSourceGrid, RejectsBadOptionsAndApertures)
+{
+	CPolarSourceGrid grid;
+	TSourceGridOptions o = options();
+	o.maxRange = 0;
+	EXPECT_THROW(grid.build(syntheticScan(), o), std::invalid_argument);
+	o = options();
+	o.binSize = -1;
+	EXPECT_THROW(grid.build(syntheticScan(), o), std::invalid_argument);
+	o = options();
+	o.sensorModel.muF = 2;
+	EXPECT_THROW(grid.build(syntheticScan(), o), std::invalid_argument);
+	CObservation2DRangeScan scan = syntheticScan();
+	scan.aperture = 0;
+	EXPECT_THROW(grid.build(scan, options()), std::invalid_argument);
+	scan.aperture = 7;
+	EXPECT_THROW(grid.build(scan, options()), std::invalid_argument);
+	EXPECT_THROW(grid.at(181, 0), std::out_of_range);
+	grid.build(syntheticScan(), options());
+	EXPECT_THROW(grid.at(0, 200), std::out_of_range);
+}
