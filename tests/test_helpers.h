@@ -69,6 +69,6 @@ inline ::testing::AssertionResult massNear(
 	EXPECT_TRUE(::mrpt_evidential::test::massNear((actual), (expected), (tol)))
 
 /** For loops over grid cells: stops at the first cell that differs. */
-#define ASSERT_MASS_NEAR_OR(actual, expected, row, col)                        \
-	ASSERT_TRUE(::mrpt_evidential::test::massNear((actual), (expected), 1e-12)) \
+#define ASSERT_MASS_NEAR_AT(actual, expected, tol, row, col)                  \
+	ASSERT_TRUE(::mrpt_evidential::test::massNear((actual), (expected), (tol))) \
 		<< "at (" << (row) << ", " << (col) << ")"

@@ -47,7 +47,8 @@ TSourceGridOptions options()
 	return o;
 }
 
-std::size_t binOf(double r) { return static_cast<std::size_t>(r / kBin); }
+/** The bin of a range, as SensorModel.h defines it. */
+std::size_t binOf(double r) { return static_cast<std::size_t>(r / kBin + 1e-9); }
 
 /** Free before the impact's bin, occupied at it, vacuous behind. */
 void expectSingleImpactRow(const CPolarSourceGrid& grid, std::size_t s, double r)
@@ -58,11 +59,11 @@ void expectSingleImpactRow(const CPolarSourceGrid& grid, std::size_t s, double r
 		const Mass& m = grid.at(s, b);
 		ASSERT_TRUE(m.isValid());
 		if (b < hit)
-			ASSERT_MASS_NEAR_OR(m, Mass::simpleFree(kMuF), s, b);
+			ASSERT_MASS_NEAR_AT(m, Mass::simpleFree(kMuF), 1e-12, s, b);
 		else if (b == hit)
-			ASSERT_MASS_NEAR_OR(m, Mass::simpleOccupied(kMuO), s, b);
+			ASSERT_MASS_NEAR_AT(m, Mass::simpleOccupied(kMuO), 1e-12, s, b);
 		else
-			ASSERT_MASS_NEAR_OR(m, Mass::vacuous(), s, b);
+			ASSERT_MASS_NEAR_AT(m, Mass::vacuous(), 1e-12, s, b);
 	}
 }
 }  // namespace
@@ -115,7 +116,7 @@ TEST(PolarSourceGrid, InvalidRangesProveNothingByDefault)
 	{
 		EXPECT_TRUE(grid.sectorObserved(s));
 		for (std::size_t b = 0; b < grid.binCount(); ++b)
-			ASSERT_MASS_NEAR_OR(grid.at(s, b), Mass::simpleFree(kMuF), s, b);
+			ASSERT_MASS_NEAR_AT(grid.at(s, b), Mass::simpleFree(kMuF), 1e-12, s, b);
 	}
 }
 
@@ -126,7 +127,7 @@ TEST(PolarSourceGrid, ReturnsBeyondMaxRangeOnlyProveFreeSpace)
 	CPolarSourceGrid grid;
 	grid.build(scan, options());
 	for (std::size_t b = 0; b < grid.binCount(); ++b)
-		ASSERT_MASS_NEAR_OR(grid.at(5, b), Mass::simpleFree(kMuF), 5, b);
+		ASSERT_MASS_NEAR_AT(grid.at(5, b), Mass::simpleFree(kMuF), 1e-12, 5, b);
 }
 
 TEST(PolarSourceGrid, WideSectorsGatherSeveralBeams)
@@ -142,14 +143,14 @@ TEST(PolarSourceGrid, WideSectorsGatherSeveralBeams)
 	const Mass* row = grid.sectorRow(10);
 	const double free3 = 1 - std::pow(1 - kMuF, 3);
 	for (std::size_t b = 0; b < binOf(ranges[0]); ++b)
-		ASSERT_MASS_NEAR_OR(row[b], Mass::simpleFree(free3), 10, b);
+		ASSERT_MASS_NEAR_AT(row[b], Mass::simpleFree(free3), 1e-12, 10, b);
 	// Each impact's bin holds muO, or 1 - (1 - muO)^2 where two share a bin.
 	std::vector<int> hits(grid.binCount(), 0);
 	for (const double r : ranges) ++hits[binOf(r)];
 	for (std::size_t b = binOf(ranges[0]); b < grid.binCount(); ++b)
 	{
 		const double o = 1 - std::pow(1 - kMuO, hits[b]);
-		ASSERT_MASS_NEAR_OR(row[b], Mass::simpleOccupied(o), 10, b);
+		ASSERT_MASS_NEAR_AT(row[b], Mass::simpleOccupied(o), 1e-12, 10, b);
 	}
 	// A width below the beam spacing is raised to it.
 	o.sectorWidth = 0.1 * M_PI / 180;

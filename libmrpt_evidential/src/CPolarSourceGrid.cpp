@@ -3,6 +3,7 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt_evidential/CPolarSourceGrid.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -15,7 +16,7 @@ void TSourceGridOptions::validate() const
 	sensorModel.validate();
 	if (!(sectorWidth >= 0.0 && sectorWidth <= 2 * M_PI))
 		throw std::invalid_argument(
-			"sector width must be in [0, 2 pi] rad, got " +
+			"sectorWidth must be in [0, 2 pi] rad, got " +
 			std::to_string(sectorWidth));
 	if (!(maxRange > 0.0 && std::isfinite(maxRange)))
 		throw std::invalid_argument(
@@ -89,10 +90,15 @@ void CPolarSourceGrid::build(
 	}
 
 	m_masses.resize(m_sectorCount * m_binCount);
+	m_informedBins.resize(m_sectorCount);
+	m_maxInformedBins = 0;
 	for (std::size_t s = 0; s < m_sectorCount; ++s)
-		sectorMassesInto(
+	{
+		m_informedBins[s] = sectorMassesInto(
 			options.sensorModel, m_impacts[s].data(), m_impacts[s].size(),
 			m_binSize, m_binCount, m_masses.data() + s * m_binCount);
+		m_maxInformedBins = std::max(m_maxInformedBins, m_informedBins[s]);
+	}
 }
 
 const Mass* CPolarSourceGrid::sectorRow(std::size_t s) const

@@ -44,11 +44,13 @@ void checkArguments(
 }
 
 /** Index of the bin holding range r, or nBins when r lies beyond the last
- * bin (+inf included). Compared as doubles so that huge ranges never
- * overflow the conversion. */
+ * bin (+inf included). A range within a billionth of a bin below an edge
+ * counts in the upper bin: 4.0 / 0.05 is 79.99999999999999 in binary, yet 4 m
+ * lies in the bin that starts at 4 m. Compared as doubles so that huge ranges
+ * never overflow the conversion. */
 std::size_t binOf(double r, double binSize, std::size_t nBins)
 {
-	const double x = r / binSize;
+	const double x = r / binSize + 1e-9;
 	return x < static_cast<double>(nBins) ? static_cast<std::size_t>(x) : nBins;
 }
 
@@ -96,20 +98,22 @@ double profileWeight(
 
 }  // namespace
 
-void sectorMassesInto(
+std::size_t sectorMassesInto(
 	const SensorModelParams& params, const double* impactRanges,
 	std::size_t nImpacts, double binSize, std::size_t nBins, Mass* out)
 {
 	checkArguments(params, impactRanges, nImpacts, binSize);
 	std::fill(out, out + nBins, Mass::vacuous());
-	if (nImpacts == 0) return;
+	if (nImpacts == 0) return 0;
 
-	std::size_t firstOccupied = nBins;
+	std::size_t firstOccupied = nBins, occupiedEnd = 0;
 	for (std::size_t i = 0; i < nImpacts; ++i)
 	{
 		const double r = impactRanges[i];
 		const Band band = occupiedBand(params, r, binSize, nBins);
 		firstOccupied = std::min(firstOccupied, band.first);
+		if (band.first < nBins)
+			occupiedEnd = std::max(occupiedEnd, std::min(band.last + 1, nBins));
 		if (params.model == SensorModel::MultiEcho)
 		{
 			if (band.first < nBins) out[band.first] = Mass::simpleOccupied(params.muO);
@@ -131,6 +135,7 @@ void sectorMassesInto(
 		? params.muF
 		: 1.0 - std::pow(1.0 - params.muF, static_cast<double>(nImpacts));
 	std::fill(out, out + firstOccupied, Mass::simpleFree(freeWeight));
+	return std::max(firstOccupied, occupiedEnd);
 }
 
 std::vector<Mass> sectorMasses(

@@ -74,6 +74,12 @@ class CPolarSourceGrid
 	 * vacuous. */
 	bool sectorObserved(std::size_t s) const { return m_observed.at(s) != 0; }
 
+	/** Number of leading bins of sector s that may hold evidence; every bin
+	 * from it on is vacuous. */
+	std::size_t informedBins(std::size_t s) const { return m_informedBins.at(s); }
+	/** The largest informedBins() of all sectors. */
+	std::size_t maxInformedBins() const { return m_maxInformedBins; }
+
 	/** The masses of one sector's row, binCount() of them.
 	 * \throws std::out_of_range if s >= sectorCount(). */
 	const Mass* sectorRow(std::size_t s) const;
@@ -85,6 +91,8 @@ class CPolarSourceGrid
 	double m_binSize = 0.0, m_firstAngle = 0.0, m_spacing = 0.0;
 	std::vector<Mass> m_masses;  //!< row-major, one row per sector
 	std::vector<char> m_observed;
+	std::vector<std::size_t> m_informedBins;
+	std::size_t m_maxInformedBins = 0;
 	std::vector<std::vector<double>> m_impacts;  //!< per sector, reused
 };
 

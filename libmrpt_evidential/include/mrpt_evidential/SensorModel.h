@@ -53,7 +53,9 @@ struct SensorModelParams
 };
 
 /** One sector's row of masses, bin b covering ranges [b binSize,
- * (b + 1) binSize). `impactRanges` holds the ranges of every impact of the
+ * (b + 1) binSize) (a range a billionth of a bin below an edge counts in the
+ * upper bin, so that binary rounding of r / binSize does not move ranges that
+ * are multiples of the bin size). `impactRanges` holds the ranges of every impact of the
  * sector (echoes, layers or beams), in any order, duplicates allowed; +inf
  * stands for a beam that crossed every bin without a return (free evidence,
  * no impact). An impact beyond the last bin also only gives free evidence.
@@ -68,8 +70,10 @@ std::vector<Mass> sectorMasses(
 	double binSize, std::size_t nBins);
 
 /** sectorMasses() writing into out[0 .. nBins-1] (no allocation), for callers
- * that build many sectors. Same contract. */
-void sectorMassesInto(
+ * that build many sectors. Same contract.
+ * \return the number of leading bins that may hold evidence: every bin from
+ *  it on is vacuous. */
+std::size_t sectorMassesInto(
 	const SensorModelParams& params, const double* impactRanges,
 	std::size_t nImpacts, double binSize, std::size_t nBins, Mass* out);
 

@@ -1,0 +1,381 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
+ * The evidential grid as an MRPT metric map. */
+#pragma once
+
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/maps/CMetricMap.h>
+#include <mrpt/typemeta/TEnumType.h>
+#include <mrpt_evidential/CPolarSourceGrid.h>
+#include <mrpt_evidential/EvidentialGridStorage.h>
+#include <mrpt_evidential/combination.h>
+
+#include <cstddef>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace mrpt::img
+{
+class CImage;
+}
+namespace mrpt::maps
+{
+class COccupancyGridMap2D;
+}
+
+namespace mrpt_evidential
+{
+namespace detail
+{
+/** A mutex that copies of its owner do not share: a copied map gets a fresh
+ * one, so that maps stay copyable as MRPT maps are. */
+struct CopyableMutex : std::mutex
+{
+	CopyableMutex() = default;
+	CopyableMutex(const CopyableMutex&) : std::mutex() {}
+	CopyableMutex& operator=(const CopyableMutex&) { return *this; }
+};
+}  // namespace detail
+
+/** What becomes of the conflict a fusion creates (the fusion rule decides
+ * how much there is; this decides whether the cell keeps it). */
+enum class ConflictHandling
+{
+	/** The cell keeps it: conflict marks change (something moved), and decay
+	 * fades it like any other evidence. */
+	Keep,
+	/** It becomes ignorance (moved to Omega) after each fusion. */
+	ToUnknown,
+	/** It is removed and the rest renormalized, as Dempster's rule does. */
+	Normalize
+};
+
+/** An evidential (Dempster-Shafer) occupancy grid, an MRPT metric map.
+ *
+ * Each cell holds a mass function on {F, O} (Mass): free, occupied, unknown
+ * and conflict. `CObservation2DRangeScan`s are turned into a polar SourceGrid
+ * by one of the lidar inverse sensor models (SensorModel.h), placed at the
+ * sensor's pose, interpolated bilinearly onto the cells they inform, and fused
+ * with the cells' previous masses, decayed by the data time elapsed since
+ * they were last written. Every cell is fused at most once per scan.
+ *
+ * In a CMultiMetricMap .ini file it is the map `evidentialGrid`:
+ * \code
+ * [MappingApplication_MetricMaps]
+ * evidentialGrid_count=1
+ * [MappingApplication_MetricMaps_evidentialGrid_00_creationOpts]
+ * min_x=-10 max_x=10 min_y=-10 max_y=10 resolution=0.05
+ * [MappingApplication_MetricMaps_evidentialGrid_00_insertOpts]
+ * sensorModel=ReinforcedMultiEcho muF=0.7 muO=0.9 fusionRule=Conjunctive
+ * \endcode
+ * Loading the library is all a program needs (LD_PRELOAD, rawlog-edit -p,
+ * RawLogViewer -l, mrpt::system::loadPluginModule, or linking it).
+ *
+ * Cells are 8 bytes: three masses in 16-bit fixed point (a stored mass is
+ * within 1/131070 of the exact one) and a time stamp (EvidentialGridStorage).
+ *
+ * Threads: const methods (reading cells, pictures, likelihood, whose cache is
+ * built under a lock) may run concurrently from several threads as long as no
+ * thread modifies the map (insertion, clear, setSize, options changes,
+ * deserialization) at the same time. */
+class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
+{
+	DEFINE_SERIALIZABLE(CEvidentialGridMap2D, mrpt_evidential)
+
+   public:
+	/** Default cell budget: 100 million cells, 800 MB. */
+	static constexpr std::size_t kDefaultMaxCells = 100'000'000;
+
+	/** A grid covering [min_x, max_x] x [min_y, max_y] with square cells of
+	 * `resolution` metres, every cell vacuous.
+	 * \throws std::invalid_argument as setSize(). */
+	explicit CEvidentialGridMap2D(
+		double min_x = -10.0, double max_x = 10.0, double min_y = -10.0,
+		double max_y = 10.0, double resolution = 0.10);
+
+	/** Discards every cell and sets a new geometry (the cell budget stays).
+	 * \throws std::invalid_argument if resolution <= 0, min >= max, a bound is
+	 *  not finite, or the grid would exceed maxCells(). */
+	void setSize(
+		double min_x, double max_x, double min_y, double max_y,
+		double resolution);
+
+	/** Largest number of cells the grid may grow to when scans reach beyond
+	 * it. \throws std::invalid_argument if 0 or below the current number of
+	 * cells. */
+	void setMaxCells(std::size_t maxCells);
+	std::size_t maxCells() const { return m_maxCells; }
+
+	/** @name Geometry
+	 * @{ */
+	const GridGeometry& geometry() const { return m_grid.geometry(); }
+	double getXMin() const { return geometry().xMin; }
+	double getXMax() const { return geometry().xMax(); }
+	double getYMin() const { return geometry().yMin; }
+	double getYMax() const { return geometry().yMax(); }
+	double getResolution() const { return geometry().resolution; }
+	int getSizeX() const { return geometry().sizeX; }
+	int getSizeY() const { return geometry().sizeY; }
+	/** @} */
+
+	/** @name Reading cells
+	 * Every read is decayed to the data time of the latest observation
+	 * inserted (latestTime()), whether or not that observation saw the cell.
+	 * @{ */
+	/** Masses of the cell holding world point (x, y); the vacuous mass
+	 * outside the map. Never throws. */
+	Mass getCellMasses(double x, double y) const;
+	/** Masses of cell (cx, cy); the vacuous mass outside the map. Never
+	 * throws. */
+	Mass getCellMassesByIndex(int cx, int cy) const;
+	/** Pignistic probability of occupancy of the cell holding (x, y), 0.5
+	 * outside the map. Never throws. */
+	double getCellBetP(double x, double y) const;
+	/** Maximum-mass decision of the cell holding (x, y) (decide()); Unknown
+	 * outside the map. Never throws. */
+	Decision getCellDecision(double x, double y) const;
+
+	/** Number of cells per decision. */
+	struct TDecisionCounts
+	{
+		std::size_t free = 0, occupied = 0, unknown = 0, conflict = 0;
+	};
+	TDecisionCounts countDecisions() const;
+
+	/** Data time of the latest observation inserted, seconds
+	 * (mrpt::Clock::toDouble of its timestamp); 0 before the first. */
+	double latestTime() const { return m_grid.latestTime(); }
+	/** Number of observations inserted since the last clear(). */
+	std::size_t insertionCount() const { return m_grid.insertionCount(); }
+	/** The cells, for loops that read them all (decay not applied: use
+	 * storage().read()). */
+	const EvidentialGridStorage& storage() const { return m_grid; }
+	/** @} */
+
+	/** @name Pictures and conversions
+	 * Pictures have one pixel per cell, row 0 at the top (largest y).
+	 * @{ */
+	/** Evidential colours, 8-bit RGB: red = m(O) + m(empty),
+	 * green = m(F) + m(empty), blue = m(Omega) + m(empty), times 255. Without
+	 * conflict the channels sum to 255 (pure red, green, blue and their
+	 * mixes); conflict brightens a cell towards white, which no other mass
+	 * can. */
+	void getAsEvidentialImage(mrpt::img::CImage& img) const;
+	/** BetP in grey levels: white = free (BetP 0), black = occupied (BetP 1),
+	 * as MRPT draws occupancy grids. */
+	void getAsBetPImage(mrpt::img::CImage& img) const;
+	/** Conflict in grey levels: black = none, white = total conflict. */
+	void getAsConflictImage(mrpt::img::CImage& img) const;
+	/** Fills an occupancy grid of the same geometry with occupancy = BetP. */
+	void getAsOccupancyGrid(mrpt::maps::COccupancyGridMap2D& grid) const;
+	/** Writes a ROS map_server pair, `<prefix>.pgm` and `<prefix>.yaml`
+	 * (occupancy = BetP; unknown cells as 205). Written atomically.
+	 * \throws std::runtime_error if a file cannot be written. */
+	void saveAsROSMap(const std::string& prefix) const;
+	/** Centres of the cells whose decision is Occupied. */
+	std::vector<std::pair<double, double>> getOccupiedCellCenters() const;
+	/** @} */
+
+	/** @name CMetricMap interface
+	 * @{ */
+	/** True until an observation has been inserted. */
+	bool isEmpty() const override;
+	/** Writes `<prefix>_evidential.png`, `<prefix>_betp.png`,
+	 * `<prefix>_conflict.png`, `<prefix>_info.txt` (geometry, options and
+	 * counts per decision) and `<prefix>.evgrid` (the serialized map), each
+	 * atomically. \throws std::runtime_error if a file cannot be written. */
+	void saveMetricMapRepresentationToFile(
+		const std::string& filNamePrefix) const override;
+	/** One line: geometry, insertions and counts per decision. */
+	std::string asString() const override;
+	/** A textured plane with the evidential picture at the map's place. */
+	void getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const override;
+	/** 0: the map takes no part in point matching. */
+	float compute3DMatchingRatio(
+		const mrpt::maps::CMetricMap* otherMap,
+		const mrpt::poses::CPose3D& otherMapPose,
+		const mrpt::maps::TMatchingRatioParams& params) const override;
+	/** nullptr: the map holds no point cloud (getOccupiedCellCenters() gives
+	 * the occupied cells), so that a CMultiMetricMap keeps using its own
+	 * points map for ICP. */
+	const mrpt::maps::CSimplePointsMap* getAsSimplePointsMap() const override
+	{
+		return nullptr;
+	}
+	/** @} */
+
+	/** Insertion options, `[<prefix>_evidentialGrid_NN_insertOpts]` in .ini
+	 * files. Angles are in degrees in files, radians here. */
+	struct TInsertionOptions : public mrpt::config::CLoadableOptions
+	{
+		/** `sensorModel`: MultiEcho, ReinforcedMultiEcho (default) or
+		 * ImpreciseMultiEcho. */
+		SensorModel sensorModel = SensorModel::ReinforcedMultiEcho;
+		/** `muF`: detection rate, [0, 1], default 0.7. */
+		double muF = 0.7;
+		/** `muO`: true-positive rate, [0, 1], default 0.9. */
+		double muO = 0.9;
+		/** `imprecision`: half-width d of an impact, metres, >= 0, default 0
+		 * (ImpreciseMultiEcho only). */
+		double imprecision = 0.0;
+		/** `imprecisionProfile`: Box (default) or Gaussian. */
+		ImprecisionProfile imprecisionProfile = ImprecisionProfile::Box;
+		/** `sectorWidth`: angular width of a polar sector, radians (degrees in
+		 * files), [0, 2 pi], default 0 = one sector per beam. */
+		double sectorWidth = 0.0;
+		/** `maxRange`: ranges are used up to this distance, metres, > 0,
+		 * default 20. */
+		double maxRange = 20.0;
+		/** `invalidRangesAsFree`: a beam without return proves free space up
+		 * to maxRange, default false (it proves nothing). */
+		bool invalidRangesAsFree = false;
+		/** `fusionRule`: Conjunctive (default), Dempster, Yager, DuboisPrade
+		 * or Cautious. */
+		FusionRule fusionRule = FusionRule::Conjunctive;
+		/** `decayRate`: per second of data time, >= 0, default 0 (no decay).
+		 * After dt seconds a cell is discounted with rate
+		 * 1 - exp(-decayRate dt). */
+		double decayRate = 0.0;
+		/** `horizontalTolerance`: largest pitch or roll of a scan's sensor
+		 * pose for it to count as planar, radians (degrees in files),
+		 * [0, pi/2], default 0.05 degrees (as COccupancyGridMap2D). */
+		double horizontalTolerance = 0.05 * M_PI / 180.0;
+		/** `conflictHandling`: Keep (default), ToUnknown or Normalize. */
+		ConflictHandling conflictHandling = ConflictHandling::Keep;
+		/** `growthMargin`: metres added beyond the scan when the grid grows,
+		 * >= 0, default 5. */
+		double growthMargin = 5.0;
+
+		/** Reads the keys above from `section`; absent keys keep their value.
+		 * \throws std::invalid_argument naming the key and value of the first
+		 *  invalid one (out of range, or an unknown enum name). */
+		void loadFromConfigFile(
+			const mrpt::config::CConfigFileBase& source,
+			const std::string& section) override;
+		/** Writes every key (angles in degrees), with its unit as a comment;
+		 * loadFromConfigFile() reads them back exactly. */
+		void saveToConfigFile(
+			mrpt::config::CConfigFileBase& target,
+			const std::string& section) const override;
+		/** Prints the keys as saveToConfigFile() writes them. */
+		void dumpToTextStream(std::ostream& out) const override;
+		/** \throws std::invalid_argument naming the first invalid field. */
+		void validate() const;
+		/** The sector model and polar grid options these options give for a
+		 * grid of the given resolution. */
+		TSourceGridOptions sourceGridOptions(double resolution) const;
+	};
+	TInsertionOptions insertionOptions;
+
+	/** Likelihood options, `[<prefix>_evidentialGrid_NN_likelihoodOpts]`: a
+	 * likelihood field (Thrun) computed from the cells' occupied evidence. */
+	struct TLikelihoodOptions : public mrpt::config::CLoadableOptions
+	{
+		/** `occupiedMass`: a cell is an obstacle of the field when its
+		 * occupied mass with the conflict set aside, m(O) / (1 - m(empty)),
+		 * is >= this (m(O) itself for a cell without conflict; with
+		 * ConflictHandling::Keep wall surfaces are mostly conflict), (0, 1],
+		 * default 0.3. */
+		double occupiedMass = 0.3;
+		/** `maxCorrsDistance`: distances to the nearest obstacle are cut at
+		 * this, metres, > 0, default 0.3. */
+		double maxCorrsDistance = 0.3;
+		/** `sigma`: standard deviation of a hit, metres, > 0, default 0.35. */
+		double sigma = 0.35;
+		/** `zHit`, `zRandom`: weights of a hit and of a random reading,
+		 * >= 0, not both 0; defaults 0.95 and 0.05. */
+		double zHit = 0.95, zRandom = 0.05;
+		/** `maxRange`: rays longer than this are not scored, metres, > 0,
+		 * default 81. */
+		double maxRange = 81.0;
+		/** `decimation`: score one ray in this many, >= 1, default 5. */
+		unsigned int decimation = 5;
+		/** `unknownAsNeutral`: a ray ending in a never-seen cell with no
+		 * obstacle nearby scores as a ray ending half of maxCorrsDistance from
+		 * an obstacle, neither a hit nor a miss; default true. false scores it
+		 * as a miss, as if the cell were free. */
+		bool unknownAsNeutral = true;
+
+		void loadFromConfigFile(
+			const mrpt::config::CConfigFileBase& source,
+			const std::string& section) override;
+		void dumpToTextStream(std::ostream& out) const override;
+		/** \throws std::invalid_argument naming the first invalid field. */
+		void validate() const;
+	};
+	TLikelihoodOptions likelihoodOptions;
+
+	MAP_DEFINITION_START(CEvidentialGridMap2D)
+	/** `[<prefix>_evidentialGrid_NN_creationOpts]`: min_x, max_x, min_y,
+	 * max_y (metres, min < max), resolution (metres, > 0) and maxCells
+	 * (cell budget for growth, > 0). */
+	double min_x = -10.0, max_x = 10.0, min_y = -10.0, max_y = 10.0,
+		   resolution = 0.10;
+	std::size_t maxCells = CEvidentialGridMap2D::kDefaultMaxCells;
+	mrpt_evidential::CEvidentialGridMap2D::TInsertionOptions insertionOpts;
+	mrpt_evidential::CEvidentialGridMap2D::TLikelihoodOptions likelihoodOpts;
+	MAP_DEFINITION_END(CEvidentialGridMap2D)
+
+   private:
+	void internal_clear() override;
+	bool internal_insertObservation(
+		const mrpt::obs::CObservation& obs,
+		const std::optional<const mrpt::poses::CPose3D>& robotPose =
+			std::nullopt) override;
+	double internal_computeObservationLikelihood(
+		const mrpt::obs::CObservation& obs,
+		const mrpt::poses::CPose3D& takenFrom) const override;
+	bool internal_canComputeObservationLikelihood(
+		const mrpt::obs::CObservation& obs) const override;
+
+	/** Fuses one scan: polar grid, bilinear transform, decay, fusion. */
+	bool insertScan(
+		const mrpt::obs::CObservation2DRangeScan& scan,
+		const mrpt::poses::CPose3D& robotPose);
+	/** Drops the likelihood field; the next likelihood rebuilds it. */
+	void invalidateLikelihoodCache();
+
+	EvidentialGridStorage m_grid;
+	std::size_t m_maxCells = kDefaultMaxCells;
+	/** Scratch space of insertion, kept to avoid allocations. */
+	CPolarSourceGrid m_sourceGrid;
+	/** The cell-budget and tilted-scan messages are printed once per map. */
+	bool m_budgetWarningShown = false, m_tiltNoticeShown = false;
+
+	/** The likelihood field: per cell, the distance to the nearest obstacle
+	 * (cut at maxCorrsDistance), and whether the cell was never seen. Built
+	 * on first use under m_likelihoodMutex, dropped on every change. */
+	struct LikelihoodField;
+	mutable detail::CopyableMutex m_likelihoodMutex;
+	mutable std::shared_ptr<const LikelihoodField> m_likelihoodField;
+	/** Builds the field for the current cells and options. */
+	std::shared_ptr<const LikelihoodField> likelihoodField() const;
+};
+
+}  // namespace mrpt_evidential
+
+MRPT_ENUM_TYPE_BEGIN(mrpt_evidential::SensorModel)
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::SensorModel, MultiEcho);
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::SensorModel, ReinforcedMultiEcho);
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::SensorModel, ImpreciseMultiEcho);
+MRPT_ENUM_TYPE_END()
+
+MRPT_ENUM_TYPE_BEGIN(mrpt_evidential::ImprecisionProfile)
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::ImprecisionProfile, Box);
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::ImprecisionProfile, Gaussian);
+MRPT_ENUM_TYPE_END()
+
+MRPT_ENUM_TYPE_BEGIN(mrpt_evidential::FusionRule)
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::FusionRule, Conjunctive);
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::FusionRule, Dempster);
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::FusionRule, Yager);
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::FusionRule, DuboisPrade);
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::FusionRule, Cautious);
+MRPT_ENUM_TYPE_END()
+
+MRPT_ENUM_TYPE_BEGIN(mrpt_evidential::ConflictHandling)
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::ConflictHandling, Keep);
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::ConflictHandling, ToUnknown);
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::ConflictHandling, Normalize);
+MRPT_ENUM_TYPE_END()

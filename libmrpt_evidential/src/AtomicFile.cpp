@@ -1,0 +1,91 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT. */
+
+#include "AtomicFile.h"
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <stdexcept>
+#include <system_error>
+
+namespace fs = std::filesystem;
+
+namespace mrpt_evidential::detail
+{
+namespace
+{
+/** A fresh temporary name next to `path`: the same directory keeps the final
+ * rename within one file system (where it is atomic), the same extension
+ * lets savers infer the format, the leading dot keeps it out of globs, and a
+ * per-process random tag plus a counter keep concurrent writers apart. */
+std::string temporaryPathFor(const std::string& path)
+{
+	static const unsigned processTag = std::random_device{}();
+	static std::atomic<unsigned long> counter{0};
+	const fs::path p(path);
+	fs::path tmp = p;
+	tmp.replace_filename(
+		"." + p.stem().string() + ".tmp-" + std::to_string(processTag) + "-" +
+		std::to_string(counter++) + p.extension().string());
+	return tmp.string();
+}
+
+/** Removes the temporary file (if any) and reports the failure. */
+[[noreturn]] void fail(
+	const std::string& path, const std::string& temporaryPath,
+	const std::string& why)
+{
+	std::error_code ignored;
+	fs::remove(temporaryPath, ignored);
+	throw std::runtime_error("cannot write '" + path + "': " + why);
+}
+}  // namespace
+
+void writeFileAtomicallyByName(
+	const std::string& path,
+	const std::function<bool(const std::string& temporaryPath)>& writer)
+{
+	const std::string tmp = temporaryPathFor(path);
+	bool written = false;
+	try
+	{
+		written = writer(tmp);
+	}
+	catch (const std::exception& e)
+	{
+		fail(path, tmp, e.what());
+	}
+	catch (...)
+	{
+		std::error_code ignored;
+		fs::remove(tmp, ignored);
+		throw;
+	}
+	if (!written) fail(path, tmp, "writing the temporary file '" + tmp + "' failed");
+	std::error_code ec;
+	if (!fs::is_regular_file(tmp, ec))
+		fail(path, tmp, "the temporary file '" + tmp + "' was not created");
+	fs::rename(tmp, path, ec);
+	if (ec) fail(path, tmp, "renaming '" + tmp + "' failed: " + ec.message());
+}
+
+void writeFileAtomically(
+	const std::string& path, const std::function<void(std::ostream&)>& writer)
+{
+	writeFileAtomicallyByName(path, [&writer](const std::string& tmp) {
+		errno = 0;
+		std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+		if (!f)
+			throw std::runtime_error(
+				"cannot create the temporary file '" + tmp +
+				"': " + (errno != 0 ? std::strerror(errno) : "unknown error"));
+		writer(f);
+		f.close();	// flushes; a failed flush or close sets failbit
+		return !f.fail();
+	});
+}
+
+}  // namespace mrpt_evidential::detail

@@ -1,0 +1,31 @@
+/* mrpt-evidential: internal: files written under a temporary name, then renamed. */
+#pragma once
+
+#include <functional>
+#include <ostream>
+#include <string>
+
+namespace mrpt_evidential::detail
+{
+/** Writes the file `path` so that a reader sees either its previous content
+ * or the complete new one, never a partial file: `writer` writes into a
+ * temporary file of the same directory, which is flushed, closed and renamed
+ * over `path` only if every step succeeded. The stream is binary.
+ * \throws std::runtime_error naming `path` if the temporary file cannot be
+ *  created, written, closed or renamed, or if `writer` throws a
+ *  std::exception (its message is kept). The temporary file is removed in
+ *  every failure case. */
+void writeFileAtomically(
+	const std::string& path, const std::function<void(std::ostream&)>& writer);
+
+/** As writeFileAtomically(), for writers that want a file name rather than
+ * a stream (e.g. image savers that pick the format from the extension): the
+ * temporary name given to `writer` ends with the same extension as `path`.
+ * `writer` returns false (or throws) on failure.
+ * \throws std::runtime_error naming `path` on any failure, also when `writer`
+ *  reports success without creating the file. */
+void writeFileAtomicallyByName(
+	const std::string& path,
+	const std::function<bool(const std::string& temporaryPath)>& writer);
+
+}  // namespace mrpt_evidential::detail

@@ -1,0 +1,280 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
+ * CEvidentialGridMap2D: construction, registration, options, reading cells. */
+
+#include <mrpt/core/initializer.h>
+#include <mrpt/maps/CMetricMap.h>
+#include <mrpt/maps/TMetricMapInitializer.h>
+#include <mrpt/rtti/CObject.h>
+#include <mrpt_evidential/CEvidentialGridMap2D.h>
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "ConfigReading.h"
+
+using namespace mrpt_evidential;
+using mrpt_evidential::detail::enumName;
+
+// The name must hold the exact rtti class name, then the .ini short name.
+MAP_DEFINITION_REGISTER(
+	"mrpt_evidential::CEvidentialGridMap2D,evidentialGrid",
+	mrpt_evidential::CEvidentialGridMap2D)
+
+IMPLEMENTS_SERIALIZABLE(CEvidentialGridMap2D, CMetricMap, mrpt_evidential)
+
+// Known to the rtti system as soon as the library is loaded, so that archives
+// (and CMultiMetricMap copies, which go through one) can create the class.
+MRPT_INITIALIZER(registerEvidentialGridClasses)
+{
+	mrpt::rtti::registerClass(CLASS_ID(CEvidentialGridMap2D));
+}
+
+CEvidentialGridMap2D::TMapDefinition::TMapDefinition() = default;
+
+void CEvidentialGridMap2D::TMapDefinition::loadFromConfigFile_map_specific(
+	const mrpt::config::CConfigFileBase& source,
+	const std::string& sectionNamePrefix)
+{
+	const std::string section = sectionNamePrefix + "_creationOpts";
+	detail::readDouble(source, section, "min_x", min_x);
+	detail::readDouble(source, section, "max_x", max_x);
+	detail::readDouble(source, section, "min_y", min_y);
+	detail::readDouble(source, section, "max_y", max_y);
+	detail::readDouble(source, section, "resolution", resolution);
+	detail::readCount(source, section, "maxCells", maxCells);
+	if (!(resolution > 0.0))
+		detail::throwBadValue(
+			section, "resolution", std::to_string(resolution), "must be > 0");
+	if (!(min_x < max_x))
+		detail::throwBadValue(
+			section, "min_x", std::to_string(min_x), "must be below max_x");
+	if (!(min_y < max_y))
+		detail::throwBadValue(
+			section, "min_y", std::to_string(min_y), "must be below max_y");
+	if (maxCells == 0)
+		detail::throwBadValue(section, "maxCells", "0", "must be > 0");
+
+	insertionOpts.loadFromConfigFile(source, sectionNamePrefix + "_insertOpts");
+	likelihoodOpts.loadFromConfigFile(
+		source, sectionNamePrefix + "_likelihoodOpts");
+}
+
+void CEvidentialGridMap2D::TMapDefinition::dumpToTextStream_map_specific(
+	std::ostream& out) const
+{
+	out << "min_x = " << min_x << " m\nmax_x = " << max_x
+		<< " m\nmin_y = " << min_y << " m\nmax_y = " << max_y
+		<< " m\nresolution = " << resolution << " m\nmaxCells = " << maxCells
+		<< "\n";
+	insertionOpts.dumpToTextStream(out);
+	likelihoodOpts.dumpToTextStream(out);
+}
+
+mrpt::maps::CMetricMap* CEvidentialGridMap2D::internal_CreateFromMapDefinition(
+	const mrpt::maps::TMetricMapInitializer& def)
+{
+	const auto& d = dynamic_cast<const TMapDefinition&>(def);
+	auto map = std::make_unique<CEvidentialGridMap2D>(
+		d.min_x, d.max_x, d.min_y, d.max_y, d.resolution);
+	map->setMaxCells(d.maxCells);
+	map->insertionOptions = d.insertionOpts;
+	map->likelihoodOptions = d.likelihoodOpts;
+	return map.release();
+}
+
+CEvidentialGridMap2D::CEvidentialGridMap2D(
+	double min_x, double max_x, double min_y, double max_y, double resolution)
+{
+	setSize(min_x, max_x, min_y, max_y, resolution);
+}
+
+void CEvidentialGridMap2D::setSize(
+	double min_x, double max_x, double min_y, double max_y, double resolution)
+{
+	m_grid.reset(min_x, max_x, min_y, max_y, resolution, m_maxCells);
+	invalidateLikelihoodCache();
+}
+
+void CEvidentialGridMap2D::setMaxCells(std::size_t maxCells)
+{
+	if (maxCells == 0 || maxCells < geometry().cellCount())
+		throw std::invalid_argument(
+			"maxCells must be > 0 and not below the grid's " +
+			std::to_string(geometry().cellCount()) + " cells, got " +
+			std::to_string(maxCells));
+	m_maxCells = maxCells;
+}
+
+void CEvidentialGridMap2D::internal_clear()
+{
+	const GridGeometry g = geometry();
+	m_grid.reset(g.xMin, g.xMax(), g.yMin, g.yMax(), g.resolution, m_maxCells);
+	invalidateLikelihoodCache();
+}
+
+bool CEvidentialGridMap2D::isEmpty() const { return insertionCount() == 0; }
+
+Mass CEvidentialGridMap2D::getCellMassesByIndex(int cx, int cy) const
+{
+	const GridGeometry& g = geometry();
+	if (!g.inside(cx, cy)) return Mass::vacuous();
+	return m_grid.read(g.index(cx, cy));
+}
+
+Mass CEvidentialGridMap2D::getCellMasses(double x, double y) const
+{
+	const GridGeometry& g = geometry();
+	if (!(x >= g.xMin && x < g.xMax() && y >= g.yMin && y < g.yMax()))
+		return Mass::vacuous();  // NaN included
+	return getCellMassesByIndex(g.cellX(x), g.cellY(y));
+}
+
+double CEvidentialGridMap2D::getCellBetP(double x, double y) const
+{
+	return betP(getCellMasses(x, y));
+}
+
+Decision CEvidentialGridMap2D::getCellDecision(double x, double y) const
+{
+	return decide(getCellMasses(x, y));
+}
+
+CEvidentialGridMap2D::TDecisionCounts CEvidentialGridMap2D::countDecisions()
+	const
+{
+	TDecisionCounts counts;
+	for (std::size_t i = 0; i < geometry().cellCount(); ++i)
+	{
+		switch (decide(m_grid.read(i)))
+		{
+			case Decision::Free: ++counts.free; break;
+			case Decision::Occupied: ++counts.occupied; break;
+			case Decision::Unknown: ++counts.unknown; break;
+			case Decision::Conflict: ++counts.conflict; break;
+		}
+	}
+	return counts;
+}
+
+std::string CEvidentialGridMap2D::asString() const
+{
+	const GridGeometry& g = geometry();
+	const TDecisionCounts c = countDecisions();
+	std::ostringstream s;
+	s << "Evidential grid " << g.sizeX << " x " << g.sizeY << " cells of "
+	  << g.resolution << " m over x [" << g.xMin << ", " << g.xMax()
+	  << "] y [" << g.yMin << ", " << g.yMax() << "], " << insertionCount()
+	  << " observations; cells free " << c.free << ", occupied " << c.occupied
+	  << ", unknown " << c.unknown << ", conflict " << c.conflict;
+	return s.str();
+}
+
+float CEvidentialGridMap2D::compute3DMatchingRatio(
+	const mrpt::maps::CMetricMap*, const mrpt::poses::CPose3D&,
+	const mrpt::maps::TMatchingRatioParams&) const
+{
+	return 0.0f;
+}
+
+// ---------------------------------------------------------------------------
+// Insertion options
+// ---------------------------------------------------------------------------
+
+void CEvidentialGridMap2D::TInsertionOptions::validate() const
+{
+	const auto fail = [](const std::string& key, double v, const char* what) {
+		throw std::invalid_argument(
+			key + " " + what + ", got " + std::to_string(v));
+	};
+	if (!(sectorWidth >= 0.0 && sectorWidth <= 2 * M_PI))
+		fail("sectorWidth", sectorWidth * 180.0 / M_PI, "must be in [0, 360] degrees");
+	sourceGridOptions(1.0).validate();  // muF, muO, imprecision, maxRange
+	if (!(decayRate >= 0.0 && std::isfinite(decayRate)))
+		fail("decayRate", decayRate, "must be a finite number >= 0 (per second)");
+	if (!(horizontalTolerance >= 0.0 && horizontalTolerance <= M_PI / 2))
+		fail("horizontalTolerance", horizontalTolerance * 180.0 / M_PI,
+			 "must be in [0, 90] degrees");
+	if (!(growthMargin >= 0.0 && std::isfinite(growthMargin)))
+		fail("growthMargin", growthMargin, "must be a finite number >= 0 (m)");
+}
+
+TSourceGridOptions CEvidentialGridMap2D::TInsertionOptions::sourceGridOptions(
+	double resolution) const
+{
+	TSourceGridOptions o;
+	o.sensorModel.model = sensorModel;
+	o.sensorModel.muF = muF;
+	o.sensorModel.muO = muO;
+	o.sensorModel.imprecision = imprecision;
+	o.sensorModel.profile = imprecisionProfile;
+	o.sectorWidth = sectorWidth;
+	o.maxRange = maxRange;
+	o.binSize = resolution;
+	o.invalidRangesAsFree = invalidRangesAsFree;
+	return o;
+}
+
+void CEvidentialGridMap2D::TInsertionOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& source, const std::string& section)
+{
+	TInsertionOptions o = *this;  // all or nothing: *this changes only if valid
+	detail::readEnum(source, section, "sensorModel", o.sensorModel);
+	detail::readDouble(source, section, "muF", o.muF);
+	detail::readDouble(source, section, "muO", o.muO);
+	detail::readDouble(source, section, "imprecision", o.imprecision);
+	detail::readEnum(source, section, "imprecisionProfile", o.imprecisionProfile);
+	detail::readDegrees(source, section, "sectorWidth", o.sectorWidth);
+	detail::readDouble(source, section, "maxRange", o.maxRange);
+	detail::readBool(source, section, "invalidRangesAsFree", o.invalidRangesAsFree);
+	detail::readEnum(source, section, "fusionRule", o.fusionRule);
+	detail::readDouble(source, section, "decayRate", o.decayRate);
+	detail::readDegrees(
+		source, section, "horizontalTolerance", o.horizontalTolerance);
+	detail::readEnum(source, section, "conflictHandling", o.conflictHandling);
+	detail::readDouble(source, section, "growthMargin", o.growthMargin);
+	try
+	{
+		o.validate();
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::invalid_argument("[" + section + "] " + e.what());
+	}
+	*this = o;
+}
+
+void CEvidentialGridMap2D::TInsertionOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& target, const std::string& section) const
+{
+	using detail::writeValue;
+	const double toDegrees = 180.0 / M_PI;
+	writeValue(target, section, "sensorModel", sensorModel,
+			   "MultiEcho, ReinforcedMultiEcho or ImpreciseMultiEcho");
+	writeValue(target, section, "muF", muF, "detection rate, [0, 1]");
+	writeValue(target, section, "muO", muO, "true-positive rate, [0, 1]");
+	writeValue(target, section, "imprecision", imprecision,
+			   "m, half-width of an impact (ImpreciseMultiEcho)");
+	writeValue(target, section, "imprecisionProfile", imprecisionProfile,
+			   "Box or Gaussian");
+	writeValue(target, section, "sectorWidth", sectorWidth * toDegrees,
+			   "deg, 0 = one sector per beam");
+	writeValue(target, section, "maxRange", maxRange, "m");
+	writeValue(target, section, "invalidRangesAsFree", invalidRangesAsFree,
+			   "a beam without return proves free space");
+	writeValue(target, section, "fusionRule", fusionRule,
+			   "Conjunctive, Dempster, Yager, DuboisPrade or Cautious");
+	writeValue(target, section, "decayRate", decayRate, "1/s of data time, 0 = none");
+	writeValue(target, section, "horizontalTolerance",
+			   horizontalTolerance * toDegrees, "deg of pitch or roll");
+	writeValue(target, section, "conflictHandling", conflictHandling,
+			   "Keep, ToUnknown or Normalize");
+	writeValue(target, section, "growthMargin", growthMargin,
+			   "m added when the grid grows");
+}
+
+void CEvidentialGridMap2D::TInsertionOptions::dumpToTextStream(
+	std::ostream& out) const
+{
+	detail::dumpAsIni(*this, "insertOpts", out);
+}

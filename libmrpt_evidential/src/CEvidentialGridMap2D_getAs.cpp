@@ -1,0 +1,239 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
+ * CEvidentialGridMap2D: pictures, conversions and files. */
+
+#include <mrpt/img/CImage.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/opengl/CSetOfObjects.h>
+#include <mrpt/opengl/CTexturedPlane.h>
+#include <mrpt/serialization/CArchive.h>
+#include <mrpt/serialization/archiveFrom_std_streams.h>
+#include <mrpt_evidential/CEvidentialGridMap2D.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "AtomicFile.h"
+
+using namespace mrpt_evidential;
+using mrpt_evidential::detail::writeFileAtomically;
+using mrpt_evidential::detail::writeFileAtomicallyByName;
+
+namespace
+{
+/** ROS map_server's default thresholds: a cell whose occupancy exceeds the
+ * first is an obstacle, below the second it is free, unknown in between. */
+constexpr double kRosOccupiedThresh = 0.65;
+constexpr double kRosFreeThresh = 0.196;
+
+/** A value in [0, 1] as a byte, rounded to nearest; out of range clamped. */
+std::uint8_t toByte(double v)
+{
+	return static_cast<std::uint8_t>(
+		std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+}
+
+/** The shortest text that reads back as exactly v (ROS and humans read
+ * these files; the default 6 digits would lose time stamps). */
+std::string number(double v)
+{
+	char buf[32];
+	const auto r = std::to_chars(buf, buf + sizeof(buf), v);
+	return std::string(buf, r.ptr);
+}
+
+/** Fills img with one pixel per cell, row 0 holding the largest y;
+ * `pixel(mass, out)` writes the channels of one cell. */
+template <typename PixelFn>
+void paint(
+	const EvidentialGridStorage& grid, mrpt::img::CImage& img,
+	mrpt::img::TImageChannels channels, PixelFn pixel)
+{
+	const GridGeometry& g = grid.geometry();
+	img.resize(
+		static_cast<std::size_t>(g.sizeX), static_cast<std::size_t>(g.sizeY),
+		channels);
+	for (int row = 0; row < g.sizeY; ++row)
+	{
+		auto* out = img.ptrLine<std::uint8_t>(static_cast<unsigned>(row));
+		const std::size_t first = g.index(0, g.sizeY - 1 - row);
+		for (int cx = 0; cx < g.sizeX; ++cx, out += channels)
+			pixel(grid.read(first + static_cast<std::size_t>(cx)), out);
+	}
+}
+
+/** A file name as a YAML scalar: plain when that is unambiguous, else
+ * double-quoted. */
+std::string yamlScalar(const std::string& s)
+{
+	const bool plain = !s.empty() &&
+		std::all_of(s.begin(), s.end(), [](char c) {
+						   return std::isalnum(static_cast<unsigned char>(c)) ||
+							   c == '.' || c == '_' || c == '-' || c == '+';
+					   }) &&
+		s.front() != '-';
+	if (plain) return s;
+	std::string q = "\"";
+	for (const char c : s)
+	{
+		if (c == '"' || c == '\\') q += '\\';
+		q += c;
+	}
+	return q + "\"";
+}
+
+void savePicture(const std::string& path, const mrpt::img::CImage& img)
+{
+	writeFileAtomicallyByName(
+		path, [&img](const std::string& tmp) { return img.saveToFile(tmp); });
+}
+}  // namespace
+
+void CEvidentialGridMap2D::getAsEvidentialImage(mrpt::img::CImage& img) const
+{
+	// CImage keeps colour pixels in OpenCV's order, blue first: the order its
+	// setPixel(0xRRGGBB), saveToFile and the OpenGL texture upload assume.
+	paint(m_grid, img, mrpt::img::CH_RGB, [](const Mass& m, std::uint8_t* p) {
+		p[0] = toByte(m.unknown + m.conflict);
+		p[1] = toByte(m.free + m.conflict);
+		p[2] = toByte(m.occupied + m.conflict);
+	});
+}
+
+void CEvidentialGridMap2D::getAsBetPImage(mrpt::img::CImage& img) const
+{
+	paint(m_grid, img, mrpt::img::CH_GRAY, [](const Mass& m, std::uint8_t* p) {
+		p[0] = toByte(1.0 - betP(m));
+	});
+}
+
+void CEvidentialGridMap2D::getAsConflictImage(mrpt::img::CImage& img) const
+{
+	paint(m_grid, img, mrpt::img::CH_GRAY, [](const Mass& m, std::uint8_t* p) {
+		p[0] = toByte(m.conflict);
+	});
+}
+
+void CEvidentialGridMap2D::getAsOccupancyGrid(
+	mrpt::maps::COccupancyGridMap2D& grid) const
+{
+	// COccupancyGridMap2D snaps its bounds to multiples of the resolution and
+	// stores floats, so each of its cells takes the BetP of the cell holding
+	// its centre: one to one when the origins agree, nearest otherwise.
+	// Its cells hold the probability of being free (0 = occupied).
+	const GridGeometry& g = geometry();
+	grid.setSize(
+		static_cast<float>(g.xMin), static_cast<float>(g.xMax()),
+		static_cast<float>(g.yMin), static_cast<float>(g.yMax()),
+		static_cast<float>(g.resolution), 0.5f);
+	for (unsigned cy = 0; cy < grid.getSizeY(); ++cy)
+		for (unsigned cx = 0; cx < grid.getSizeX(); ++cx)
+			grid.setCell(
+				static_cast<int>(cx), static_cast<int>(cy),
+				static_cast<float>(
+					1.0 - getCellBetP(grid.idx2x(cx), grid.idx2y(cy))));
+}
+
+void CEvidentialGridMap2D::saveAsROSMap(const std::string& prefix) const
+{
+	const GridGeometry& g = geometry();
+	const std::string pgmPath = prefix + ".pgm";
+	// map_server's trinary convention: 0 occupied, 254 free, 205 unknown; it
+	// reads a pixel back as occupancy (255 - value) / 255 against the same
+	// thresholds, so each class survives a load.
+	writeFileAtomically(pgmPath, [&](std::ostream& os) {
+		os << "P5\n# mrpt-evidential: occupancy = BetP\n"
+		   << g.sizeX << ' ' << g.sizeY << "\n255\n";
+		std::vector<char> line(static_cast<std::size_t>(g.sizeX));
+		for (int row = 0; row < g.sizeY; ++row)
+		{
+			const std::size_t first = g.index(0, g.sizeY - 1 - row);
+			for (std::size_t cx = 0; cx < line.size(); ++cx)
+			{
+				const double p = betP(m_grid.read(first + cx));
+				line[cx] = static_cast<char>(
+					p > kRosOccupiedThresh ? 0 : p < kRosFreeThresh ? 254 : 205);
+			}
+			os.write(line.data(), static_cast<std::streamsize>(line.size()));
+		}
+	});
+	writeFileAtomically(prefix + ".yaml", [&](std::ostream& os) {
+		os << "image: "
+		   << yamlScalar(std::filesystem::path(pgmPath).filename().string())
+		   << "\nresolution: " << number(g.resolution) << "\norigin: ["
+		   << number(g.xMin) << ", " << number(g.yMin)
+		   << ", 0.0]\nnegate: 0\noccupied_thresh: "
+		   << number(kRosOccupiedThresh)
+		   << "\nfree_thresh: " << number(kRosFreeThresh) << "\n";
+	});
+}
+
+std::vector<std::pair<double, double>>
+	CEvidentialGridMap2D::getOccupiedCellCenters() const
+{
+	const GridGeometry& g = geometry();
+	std::vector<std::pair<double, double>> centers;
+	for (int cy = 0; cy < g.sizeY; ++cy)
+		for (int cx = 0; cx < g.sizeX; ++cx)
+			if (decide(m_grid.read(g.index(cx, cy))) == Decision::Occupied)
+				centers.emplace_back(g.cellCenterX(cx), g.cellCenterY(cy));
+	return centers;
+}
+
+void CEvidentialGridMap2D::getVisualizationInto(
+	mrpt::opengl::CSetOfObjects& o) const
+{
+	if (!genericMapParams.enableSaveAs3DObject) return;
+	mrpt::img::CImage img;
+	getAsEvidentialImage(img);
+	img.flipVertical();  // the plane maps texture row 0 to yMin
+	const GridGeometry& g = geometry();
+	auto plane = mrpt::opengl::CTexturedPlane::Create(
+		static_cast<float>(g.xMin), static_cast<float>(g.xMax()),
+		static_cast<float>(g.yMin), static_cast<float>(g.yMax()));
+	plane->assignImage(std::move(img));
+	o.insert(plane);
+}
+
+void CEvidentialGridMap2D::saveMetricMapRepresentationToFile(
+	const std::string& filNamePrefix) const
+{
+	mrpt::img::CImage img;
+	getAsEvidentialImage(img);
+	savePicture(filNamePrefix + "_evidential.png", img);
+	getAsBetPImage(img);
+	savePicture(filNamePrefix + "_betp.png", img);
+	getAsConflictImage(img);
+	savePicture(filNamePrefix + "_conflict.png", img);
+
+	writeFileAtomically(filNamePrefix + "_info.txt", [this](std::ostream& os) {
+		const GridGeometry& g = geometry();
+		const TDecisionCounts c = countDecisions();
+		os << "mrpt_evidential::CEvidentialGridMap2D\n"
+		   << "x: [" << number(g.xMin) << ", " << number(g.xMax()) << "] m\n"
+		   << "y: [" << number(g.yMin) << ", " << number(g.yMax()) << "] m\n"
+		   << "resolution: " << number(g.resolution) << " m\n"
+		   << "cells: " << g.sizeX << " x " << g.sizeY << " (budget "
+		   << m_maxCells << ")\n"
+		   << "insertions: " << insertionCount() << "\n"
+		   << "latest time: " << number(latestTime()) << " s\n"
+		   << "cells by decision: free " << c.free << ", occupied "
+		   << c.occupied << ", unknown " << c.unknown << ", conflict "
+		   << c.conflict << "\n\n";
+		insertionOptions.dumpToTextStream(os);
+		likelihoodOptions.dumpToTextStream(os);
+		os << "// genericMapParams\n";
+		genericMapParams.dumpToTextStream(os);
+	});
+
+	writeFileAtomically(filNamePrefix + ".evgrid", [this](std::ostream& os) {
+		auto ar = mrpt::serialization::archiveFrom<std::ostream>(os);
+		ar << *this;
+	});
+}

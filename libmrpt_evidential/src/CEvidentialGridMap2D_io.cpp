@@ -1,0 +1,297 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
+ * CEvidentialGridMap2D: serialization (CSerializable).
+ *
+ * Layout of version 0, after MRPT's object header (class name, version byte),
+ * every number little-endian:
+ *   geometry     f64 xMin, f64 yMin, f64 resolution, i32 sizeX, i32 sizeY
+ *   budget       u64 maxCells
+ *   insertion    u8 sensorModel, f64 muF, f64 muO, f64 imprecision,
+ *                u8 imprecisionProfile, f64 sectorWidth (rad), f64 maxRange,
+ *                u8 invalidRangesAsFree, u8 fusionRule, f64 decayRate,
+ *                f64 horizontalTolerance (rad), u8 conflictHandling,
+ *                f64 growthMargin
+ *   likelihood   f64 occupiedMass, f64 maxCorrsDistance, f64 sigma, f64 zHit,
+ *                f64 zRandom, f64 maxRange, u32 decimation,
+ *                u8 unknownAsNeutral
+ *   generic      genericMapParams as an MRPT object (its own header/version)
+ *   stamps       u32 count N, N x f64 insertion times
+ *   storage      u64 insertionCount, f64 decayRate (the storage's)
+ *   cells        sizeX * sizeY cells, row by row from (0, 0), each
+ *                u16 conflict, u16 free, u16 occupied, u16 stamp
+ *   checksum     u64 FNV-1a (64 bit) of every byte above, header excluded
+ * Enums are stored as their integer values; booleans as 0 or 1.
+ * Reading refuses a grid of more cells than its stored budget or than
+ * 10 x kDefaultMaxCells, before allocating anything for it. */
+
+#include <mrpt/serialization/CArchive.h>
+#include <mrpt_evidential/CEvidentialGridMap2D.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+using namespace mrpt_evidential;
+using mrpt::serialization::CArchive;
+
+namespace
+{
+/** Cells are streamed in blocks of this many, to bound the scratch buffer. */
+constexpr std::size_t kCellsPerBlock = 4096;
+constexpr std::size_t kBytesPerCell = 8;
+
+/** Reads exactly len bytes. CArchive::ReadBuffer throws only when it reads
+ * nothing; a short read at the end of a truncated stream must throw too. */
+void readFully(CArchive& in, void* buf, std::size_t len)
+{
+	auto* bytes = static_cast<std::uint8_t*>(buf);
+	for (std::size_t done = 0; done < len;)
+		done += in.ReadBuffer(bytes + done, len - done);
+}
+
+/** An archive that forwards every byte to another one and keeps a 64-bit
+ * FNV-1a hash of them, so that the payload's checksum covers exactly what was
+ * written or read, nested objects included. Reads are all or nothing. */
+class ChecksummedArchive : public CArchive
+{
+   public:
+	explicit ChecksummedArchive(CArchive& inner) : m_inner(inner) {}
+
+	std::uint64_t hash() const { return m_hash; }
+
+	std::string getArchiveDescription() const override
+	{
+		return m_inner.getArchiveDescription();
+	}
+
+   protected:
+	std::size_t write(const void* buf, std::size_t len) override
+	{
+		m_inner.WriteBuffer(buf, len);
+		add(buf, len);
+		return len;
+	}
+	std::size_t read(void* buf, std::size_t len) override
+	{
+		readFully(m_inner, buf, len);
+		add(buf, len);
+		return len;
+	}
+
+   private:
+	void add(const void* buf, std::size_t len)
+	{
+		const auto* bytes = static_cast<const std::uint8_t*>(buf);
+		for (std::size_t i = 0; i < len; ++i)
+			m_hash = (m_hash ^ bytes[i]) * 0x100000001b3ULL;
+	}
+
+	CArchive& m_inner;
+	std::uint64_t m_hash = 0xcbf29ce484222325ULL;
+};
+
+[[noreturn]] void corrupted(const std::string& what)
+{
+	throw std::runtime_error(
+		"CEvidentialGridMap2D: corrupted or invalid serialized map: " + what);
+}
+
+template <typename E>
+void writeEnum(CArchive& out, E value)
+{
+	out << static_cast<std::uint8_t>(value);
+}
+
+/** An enum stored as an integer, checked against the enum's declared
+ * members. */
+template <typename E>
+E readEnum(CArchive& in, const char* field)
+{
+	const auto value = static_cast<E>(in.ReadAs<std::uint8_t>());
+	std::string name;
+	if (!mrpt::typemeta::TEnumType<E>::getBimap().direct(value, name))
+		corrupted(std::string("unknown value of ") + field);
+	return value;
+}
+
+bool readBool(CArchive& in, const char* field)
+{
+	const auto v = in.ReadAs<std::uint8_t>();
+	if (v > 1) corrupted(std::string("invalid boolean ") + field);
+	return v == 1;
+}
+
+void putU16(std::uint8_t* p, std::uint16_t v)
+{
+	p[0] = static_cast<std::uint8_t>(v & 0xFF);
+	p[1] = static_cast<std::uint8_t>(v >> 8);
+}
+std::uint16_t getU16(const std::uint8_t* p)
+{
+	return static_cast<std::uint16_t>(p[0] | (p[1] << 8));
+}
+}  // namespace
+
+uint8_t CEvidentialGridMap2D::serializeGetVersion() const { return 0; }
+
+void CEvidentialGridMap2D::serializeTo(CArchive& out) const
+{
+	ChecksummedArchive ar(out);
+	const GridGeometry& g = geometry();
+	ar << g.xMin << g.yMin << g.resolution << static_cast<std::int32_t>(g.sizeX)
+	   << static_cast<std::int32_t>(g.sizeY);
+	ar << static_cast<std::uint64_t>(m_maxCells);
+
+	const TInsertionOptions& io = insertionOptions;
+	writeEnum(ar, io.sensorModel);
+	ar << io.muF << io.muO << io.imprecision;
+	writeEnum(ar, io.imprecisionProfile);
+	ar << io.sectorWidth << io.maxRange
+	   << static_cast<std::uint8_t>(io.invalidRangesAsFree);
+	writeEnum(ar, io.fusionRule);
+	ar << io.decayRate << io.horizontalTolerance;
+	writeEnum(ar, io.conflictHandling);
+	ar << io.growthMargin;
+
+	const TLikelihoodOptions& lo = likelihoodOptions;
+	ar << lo.occupiedMass << lo.maxCorrsDistance << lo.sigma << lo.zHit
+	   << lo.zRandom << lo.maxRange << static_cast<std::uint32_t>(lo.decimation)
+	   << static_cast<std::uint8_t>(lo.unknownAsNeutral);
+
+	ar << genericMapParams;
+
+	const std::vector<double>& stamps = m_grid.stampTimes();
+	ar << static_cast<std::uint32_t>(stamps.size());
+	for (const double t : stamps) ar << t;
+	ar << static_cast<std::uint64_t>(m_grid.insertionCount())
+	   << m_grid.decayRate();
+
+	// Explicit little-endian bytes: independent of the host's byte order and
+	// of the struct's layout.
+	const std::vector<QuantizedCell>& cells = m_grid.cells();
+	std::vector<std::uint8_t> block(
+		std::min(cells.size(), kCellsPerBlock) * kBytesPerCell);
+	for (std::size_t first = 0; first < cells.size(); first += kCellsPerBlock)
+	{
+		const std::size_t n = std::min(kCellsPerBlock, cells.size() - first);
+		for (std::size_t i = 0; i < n; ++i)
+		{
+			const QuantizedCell& c = cells[first + i];
+			std::uint8_t* p = &block[i * kBytesPerCell];
+			putU16(p, c.conflict);
+			putU16(p + 2, c.free);
+			putU16(p + 4, c.occupied);
+			putU16(p + 6, c.stamp);
+		}
+		ar.WriteBuffer(block.data(), n * kBytesPerCell);
+	}
+
+	out << ar.hash();  // little-endian, as the archive writes integers
+}
+
+void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
+{
+	if (version != 0) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+
+	// Everything goes into locals: the map changes only once all is read,
+	// checked and validated.
+	ChecksummedArchive ar(in);
+	GridGeometry g;
+	ar >> g.xMin >> g.yMin >> g.resolution;
+	g.sizeX = ar.ReadAs<std::int32_t>();
+	g.sizeY = ar.ReadAs<std::int32_t>();
+	const auto maxCells = ar.ReadAs<std::uint64_t>();
+	// Sizes are checked before anything is allocated, so that a corrupted
+	// size fails here rather than in a huge allocation.
+	if (maxCells == 0) corrupted("a cell budget of 0");
+	if (g.sizeX < 1 || g.sizeY < 1) corrupted("an empty grid");
+	if (g.cellCount() > maxCells || g.cellCount() > kDefaultMaxCells * 10)
+		corrupted(
+			"a grid of " + std::to_string(g.sizeX) + " x " +
+			std::to_string(g.sizeY) + " cells, beyond the cell budget");
+
+	TInsertionOptions io;
+	io.sensorModel = readEnum<SensorModel>(ar, "sensorModel");
+	ar >> io.muF >> io.muO >> io.imprecision;
+	io.imprecisionProfile =
+		readEnum<ImprecisionProfile>(ar, "imprecisionProfile");
+	ar >> io.sectorWidth >> io.maxRange;
+	io.invalidRangesAsFree = readBool(ar, "invalidRangesAsFree");
+	io.fusionRule = readEnum<FusionRule>(ar, "fusionRule");
+	ar >> io.decayRate >> io.horizontalTolerance;
+	io.conflictHandling = readEnum<ConflictHandling>(ar, "conflictHandling");
+	ar >> io.growthMargin;
+
+	TLikelihoodOptions lo;
+	ar >> lo.occupiedMass >> lo.maxCorrsDistance >> lo.sigma >> lo.zHit >>
+		lo.zRandom >> lo.maxRange;
+	lo.decimation = ar.ReadAs<std::uint32_t>();
+	lo.unknownAsNeutral = readBool(ar, "unknownAsNeutral");
+
+	mrpt::maps::TMapGenericParams generic;
+	ar >> generic;
+
+	const auto stampCount = ar.ReadAs<std::uint32_t>();
+	if (stampCount < 1 || stampCount > EvidentialGridStorage::kMaxStamps)
+		corrupted(std::to_string(stampCount) + " insertion times");
+	std::vector<double> stamps(stampCount);
+	for (double& t : stamps) ar >> t;
+	const auto insertions = ar.ReadAs<std::uint64_t>();
+	const auto decayRate = ar.ReadAs<double>();
+
+	std::vector<QuantizedCell> cells(g.cellCount());
+	std::vector<std::uint8_t> block(
+		std::min(cells.size(), kCellsPerBlock) * kBytesPerCell);
+	for (std::size_t first = 0; first < cells.size(); first += kCellsPerBlock)
+	{
+		const std::size_t n = std::min(kCellsPerBlock, cells.size() - first);
+		ar.ReadBuffer(block.data(), n * kBytesPerCell);
+		for (std::size_t i = 0; i < n; ++i)
+		{
+			const std::uint8_t* p = &block[i * kBytesPerCell];
+			QuantizedCell& c = cells[first + i];
+			c.conflict = getU16(p);
+			c.free = getU16(p + 2);
+			c.occupied = getU16(p + 4);
+			c.stamp = getU16(p + 6);
+		}
+	}
+
+	std::array<std::uint8_t, 8> stored{};
+	readFully(in, stored.data(), stored.size());
+	std::uint64_t checksum = 0;
+	for (std::size_t i = stored.size(); i-- > 0;)
+		checksum = (checksum << 8) | stored[i];
+	if (checksum != ar.hash()) corrupted("checksum mismatch");
+
+	try
+	{
+		io.validate();
+		lo.validate();
+	}
+	catch (const std::invalid_argument& e)
+	{
+		corrupted(std::string("invalid options: ") + e.what());
+	}
+	EvidentialGridStorage grid;
+	try
+	{
+		grid.assign(
+			g, std::move(cells), std::move(stamps),
+			static_cast<std::size_t>(insertions), decayRate);
+	}
+	catch (const std::invalid_argument& e)
+	{
+		corrupted(e.what());
+	}
+
+	// Commit: nothing below can fail (maxCells > 0 was checked).
+	m_grid = std::move(grid);
+	setMaxCells(static_cast<std::size_t>(maxCells));
+	insertionOptions = io;
+	likelihoodOptions = lo;
+	genericMapParams = generic;
+	invalidateLikelihoodCache();
+}

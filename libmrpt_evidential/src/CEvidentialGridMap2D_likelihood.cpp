@@ -1,0 +1,443 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
+ * Observation likelihood of CEvidentialGridMap2D: a likelihood field (Thrun)
+ * built from the cells' occupied evidence, and its options. */
+#include <mrpt_evidential/CEvidentialGridMap2D.h>
+
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose3D.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <iomanip>
+#include <limits>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace mrpt_evidential
+{
+/** Distances to the nearest obstacle over the map and a margin of cells
+ * around it: the margin lets an end point just outside the map see the
+ * obstacles inside it that are within maxCorrsDistance. */
+struct CEvidentialGridMap2D::LikelihoodField
+{
+	/** The options the field was built with: changing them (the fields are
+	 * public, nothing tells the map) makes the field stale. */
+	double occupiedMass = 0.0, maxCorrsDistance = 0.0;
+	/** Geometry of the field: the map's, grown by the margin on every side. */
+	GridGeometry geometry;
+	/** maxCorrsDistance as stored in `distance`: a cell holding it has no
+	 * obstacle within maxCorrsDistance. */
+	float cutDistance = 0.0f;
+	/** Per cell, metres, in [0, cutDistance]. */
+	std::vector<float> distance;
+	/** Per cell, 1 when the cell was never seen (its largest mass is
+	 * m(Omega)); every margin cell is never seen. */
+	std::vector<std::uint8_t> neverSeen;
+
+	/** Distance and never-seen flag of the cell holding world point (x, y);
+	 * beyond the field, no obstacle is near and nothing was seen. */
+	void lookup(double x, double y, double& dist, bool& unseen) const
+	{
+		const double fx = std::floor((x - geometry.xMin) / geometry.resolution);
+		const double fy = std::floor((y - geometry.yMin) / geometry.resolution);
+		// Compared as doubles: a far point must not overflow an int.
+		if (!(fx >= 0.0 && fy >= 0.0 && fx < geometry.sizeX &&
+			  fy < geometry.sizeY))
+		{
+			dist = cutDistance;
+			unseen = true;
+			return;
+		}
+		const std::size_t i =
+			geometry.index(static_cast<int>(fx), static_cast<int>(fy));
+		dist = distance[i];
+		unseen = neverSeen[i] != 0;
+	}
+};
+
+namespace
+{
+/** Largest margin of the field, cells per side: a huge maxCorrsDistance must
+ * not make the field dwarf the map. Points farther outside count as far from
+ * every obstacle. */
+constexpr int kMaxMarginCells = 1024;
+
+/** The occupied mass with the conflict set aside, m(O) / (1 - m(empty)), as
+ * Dempster's normalization (and betP) would read it; m(O) itself when the
+ * cell holds no conflict. With ConflictHandling::Keep the surfaces of real
+ * walls end up mostly in conflict (the beams that stop there meet those that
+ * pass a few centimetres beyond): m(O) alone would leave only the cells
+ * behind the surfaces as obstacles. 0 at total conflict. */
+double occupiedShare(const Mass& m)
+{
+	const double k = m.free + m.occupied + m.unknown;
+	return k > kTotalConflictTolerance ? m.occupied / k : 0.0;
+}
+
+/** Exact squared Euclidean distance transform (Felzenszwalb and Huttenlocher)
+ * of one row: out[x] = min over q of (x - q)^2 + h[q]^2, for the q whose
+ * h[q] <= reach; out[x] = +inf when there is none. h holds vertical
+ * distances in cells. O(n): `sites` and `bounds` are scratch of size n and
+ * n + 1. */
+void rowDistanceTransform(
+	const std::int32_t* h, int n, std::int32_t reach, double* out,
+	std::vector<int>& sites, std::vector<double>& bounds)
+{
+	constexpr double kInf = std::numeric_limits<double>::infinity();
+	const auto f = [h](int q) {
+		return static_cast<double>(h[q]) * static_cast<double>(h[q]);
+	};
+	// Lower envelope of the parabolas (x - q)^2 + h[q]^2: sites[0..k] with
+	// parabola sites[j] lowest over [bounds[j], bounds[j + 1]).
+	int k = -1;
+	for (int q = 0; q < n; ++q)
+	{
+		if (h[q] > reach) continue;
+		double s = -kInf;
+		while (k >= 0)
+		{
+			const int v = sites[k];
+			s = ((f(q) + double(q) * q) - (f(v) + double(v) * v)) /
+				(2.0 * (q - v));
+			if (s > bounds[k]) break;
+			--k;
+		}
+		++k;
+		sites[k] = q;
+		bounds[k] = k == 0 ? -kInf : s;
+		bounds[k + 1] = kInf;
+	}
+	if (k < 0)
+	{
+		std::fill(out, out + n, kInf);
+		return;
+	}
+	int j = 0;
+	for (int x = 0; x < n; ++x)
+	{
+		while (bounds[j + 1] < x) ++j;
+		const double dx = x - sites[j];
+		out[x] = dx * dx + f(sites[j]);
+	}
+}
+
+/** log(exp(a) + exp(b)) without overflow or underflow; either may be -inf.
+ * Scoring in logs keeps a ray finite when its Gaussian term underflows. */
+double logAddExp(double a, double b)
+{
+	if (a < b) std::swap(a, b);
+	if (b == -std::numeric_limits<double>::infinity()) return a;
+	return a + std::log1p(std::exp(b - a));
+}
+
+std::string formatValue(double v)
+{
+	std::ostringstream s;
+	s << v;
+	return s.str();
+}
+
+[[noreturn]] void throwInvalid(
+	const std::string& key, const std::string& rule, const std::string& got)
+{
+	throw std::invalid_argument(
+		"likelihoodOpts: " + key + " must be " + rule + ", got " + got);
+}
+
+/** The text of a key, or false if absent. */
+bool readText(
+	const mrpt::config::CConfigFileBase& source, const std::string& section,
+	const std::string& key, std::string& text)
+{
+	if (!source.keyExists(section, key)) return false;
+	text = source.read_string(section, key, "");
+	return true;
+}
+
+/** A number that must fill the whole text: stock read_double would take
+ * "abc" as 0 and "1x" as 1 without a word. */
+void readDouble(
+	const mrpt::config::CConfigFileBase& source, const std::string& section,
+	const std::string& key, double& value)
+{
+	std::string text;
+	if (!readText(source, section, key, text)) return;
+	const char* begin = text.c_str();
+	char* end = nullptr;
+	const double v = std::strtod(begin, &end);
+	if (text.empty() || end != begin + text.size())
+		throwInvalid(key, "a number", "'" + text + "'");
+	value = v;
+}
+
+void readDecimation(
+	const mrpt::config::CConfigFileBase& source, const std::string& section,
+	unsigned int& value)
+{
+	std::string text;
+	if (!readText(source, section, "decimation", text)) return;
+	const char* begin = text.c_str();
+	char* end = nullptr;
+	const long long v = std::strtoll(begin, &end, 10);
+	if (text.empty() || end != begin + text.size())
+		throwInvalid("decimation", "an integer", "'" + text + "'");
+	// Checked here: the field is unsigned, so validate() cannot see a
+	// negative value.
+	if (v < 1 || v > std::numeric_limits<unsigned int>::max())
+		throwInvalid("decimation", "an integer >= 1", text);
+	value = static_cast<unsigned int>(v);
+}
+
+void readBool(
+	const mrpt::config::CConfigFileBase& source, const std::string& section,
+	const std::string& key, bool& value)
+{
+	std::string text;
+	if (!readText(source, section, key, text)) return;
+	std::string t = text;
+	for (char& c : t)
+		c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+	if (t == "true" || t == "yes" || t == "1")
+		value = true;
+	else if (t == "false" || t == "no" || t == "0")
+		value = false;
+	else
+		throwInvalid(key, "true or false", "'" + text + "'");
+}
+
+}  // namespace
+
+void CEvidentialGridMap2D::TLikelihoodOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& source, const std::string& section)
+{
+	// All or nothing: *this changes only when every value is valid.
+	TLikelihoodOptions o = *this;
+	readDouble(source, section, "occupiedMass", o.occupiedMass);
+	readDouble(source, section, "maxCorrsDistance", o.maxCorrsDistance);
+	readDouble(source, section, "sigma", o.sigma);
+	readDouble(source, section, "zHit", o.zHit);
+	readDouble(source, section, "zRandom", o.zRandom);
+	readDouble(source, section, "maxRange", o.maxRange);
+	readDecimation(source, section, o.decimation);
+	readBool(source, section, "unknownAsNeutral", o.unknownAsNeutral);
+	o.validate();
+	*this = o;
+}
+
+void CEvidentialGridMap2D::TLikelihoodOptions::validate() const
+{
+	// Written as !(valid) so that NaN fails every test.
+	if (!(occupiedMass > 0.0 && occupiedMass <= 1.0))
+		throwInvalid("occupiedMass", "in (0, 1]", formatValue(occupiedMass));
+	if (!(maxCorrsDistance > 0.0 && std::isfinite(maxCorrsDistance)))
+		throwInvalid(
+			"maxCorrsDistance", "> 0 and finite",
+			formatValue(maxCorrsDistance));
+	if (!(sigma > 0.0 && std::isfinite(sigma)))
+		throwInvalid("sigma", "> 0 and finite", formatValue(sigma));
+	if (!(zHit >= 0.0 && std::isfinite(zHit)))
+		throwInvalid("zHit", ">= 0 and finite", formatValue(zHit));
+	if (!(zRandom >= 0.0 && std::isfinite(zRandom)))
+		throwInvalid("zRandom", ">= 0 and finite", formatValue(zRandom));
+	if (zHit == 0.0 && zRandom == 0.0)
+		throwInvalid("zHit and zRandom", "not both 0", "0 and 0");
+	if (!(maxRange > 0.0 && std::isfinite(maxRange)))
+		throwInvalid("maxRange", "> 0 and finite", formatValue(maxRange));
+	if (decimation < 1)
+		throwInvalid("decimation", "an integer >= 1", formatValue(decimation));
+}
+
+/* As .ini lines with the unit in a "//" comment, which MRPT's readers
+ * strip: a dump can be pasted into a likelihoodOpts section. */
+void CEvidentialGridMap2D::TLikelihoodOptions::dumpToTextStream(
+	std::ostream& out) const
+{
+	// Formatted apart so that the caller's stream keeps its flags.
+	std::ostringstream s;
+	const auto line = [&s](const char* key, const auto& value,
+						   const char* unit) {
+		s << std::left << std::setw(17) << key << "= " << std::setw(8)
+			<< value << " // " << unit << "\n";
+	};
+	s << "// likelihoodOpts of CEvidentialGridMap2D\n";
+	line("occupiedMass", occupiedMass,
+		 "mass in (0, 1]: obstacles have m(O) >= this");
+	line("maxCorrsDistance", maxCorrsDistance, "m");
+	line("sigma", sigma, "m");
+	line("zHit", zHit, "weight, >= 0");
+	line("zRandom", zRandom, "weight, >= 0");
+	line("maxRange", maxRange, "m");
+	line("decimation", decimation, "rays: one scored in this many");
+	line("unknownAsNeutral", unknownAsNeutral ? "true" : "false", "bool");
+	out << s.str();
+}
+
+void CEvidentialGridMap2D::invalidateLikelihoodCache()
+{
+	std::lock_guard<std::mutex> lock(m_likelihoodMutex);
+	m_likelihoodField.reset();
+}
+
+std::shared_ptr<const CEvidentialGridMap2D::LikelihoodField>
+	CEvidentialGridMap2D::likelihoodField() const
+{
+	// The lock is held while building: threads that ask at the same time wait
+	// for the one build instead of each making its own.
+	std::lock_guard<std::mutex> lock(m_likelihoodMutex);
+	const TLikelihoodOptions& opts = likelihoodOptions;
+	if (m_likelihoodField &&
+		m_likelihoodField->occupiedMass == opts.occupiedMass &&
+		m_likelihoodField->maxCorrsDistance == opts.maxCorrsDistance)
+		return m_likelihoodField;
+	opts.validate();
+
+	const GridGeometry& map = m_grid.geometry();
+	auto field = std::make_shared<LikelihoodField>();
+	field->occupiedMass = opts.occupiedMass;
+	field->maxCorrsDistance = opts.maxCorrsDistance;
+	field->cutDistance = static_cast<float>(opts.maxCorrsDistance);
+
+	// Distances are exact up to the cut: the reach (in cells) is the cut
+	// rounded up, and farther sites never win below the cut.
+	const double reachCells =
+		std::ceil(opts.maxCorrsDistance / map.resolution);
+	const int margin =
+		static_cast<int>(std::min<double>(reachCells, kMaxMarginCells));
+	GridGeometry& g = field->geometry;
+	g.resolution = map.resolution;
+	g.xMin = map.xMin - margin * map.resolution;
+	g.yMin = map.yMin - margin * map.resolution;
+	g.sizeX = map.sizeX + 2 * margin;
+	g.sizeY = map.sizeY + 2 * margin;
+	// No vertical distance reaches the field's height: capping there changes
+	// nothing and keeps reach + 1 from overflowing.
+	const auto reach = static_cast<std::int32_t>(
+		std::min<double>(reachCells, g.sizeY));
+	const std::size_t cells = g.cellCount();
+	field->distance.assign(cells, field->cutDistance);
+	field->neverSeen.assign(cells, 1);
+
+	// Vertical distance to the nearest obstacle of the same column, in cells,
+	// saturated at reach + 1 ("none within reach"): a downward and an upward
+	// sweep, row by row so that memory is read in order.
+	const std::int32_t none = reach + 1;
+	std::vector<std::int32_t> vertical(cells, none);
+	for (int fy = 0; fy < g.sizeY; ++fy)
+	{
+		const int cy = fy - margin;
+		std::int32_t* row = vertical.data() + g.index(0, fy);
+		const std::int32_t* below =
+			fy > 0 ? vertical.data() + g.index(0, fy - 1) : nullptr;
+		for (int fx = 0; fx < g.sizeX; ++fx)
+		{
+			const int cx = fx - margin;
+			bool obstacle = false;
+			if (map.inside(cx, cy))
+			{
+				const Mass m = m_grid.read(map.index(cx, cy));
+				obstacle = occupiedShare(m) >= opts.occupiedMass;
+				field->neverSeen[g.index(fx, fy)] =
+					decide(m) == Decision::Unknown ? 1 : 0;
+			}
+			if (obstacle)
+				row[fx] = 0;
+			else if (below)
+				row[fx] = std::min(below[fx] + 1, none);
+		}
+	}
+	for (int fy = g.sizeY - 2; fy >= 0; --fy)
+	{
+		std::int32_t* row = vertical.data() + g.index(0, fy);
+		const std::int32_t* above = vertical.data() + g.index(0, fy + 1);
+		for (int fx = 0; fx < g.sizeX; ++fx)
+			row[fx] = std::min(row[fx], std::min(above[fx] + 1, none));
+	}
+
+	// Then along each row, the exact 2-D distance from the vertical ones.
+	std::vector<double> squared(static_cast<std::size_t>(g.sizeX));
+	std::vector<int> sites(static_cast<std::size_t>(g.sizeX));
+	std::vector<double> bounds(static_cast<std::size_t>(g.sizeX) + 1);
+	for (int fy = 0; fy < g.sizeY; ++fy)
+	{
+		const std::size_t first = g.index(0, fy);
+		rowDistanceTransform(
+			vertical.data() + first, g.sizeX, reach, squared.data(), sites,
+			bounds);
+		for (int fx = 0; fx < g.sizeX; ++fx)
+		{
+			const double d = std::sqrt(squared[fx]) * g.resolution;
+			if (d < opts.maxCorrsDistance)
+				field->distance[first + fx] = static_cast<float>(d);
+		}
+	}
+
+	m_likelihoodField = field;
+	return m_likelihoodField;
+}
+
+/* Only CObservation2DRangeScan is scored: any other observation gives 0 (a
+ * log-likelihood that changes no particle weight), and
+ * internal_canComputeObservationLikelihood() says so beforehand. */
+double CEvidentialGridMap2D::internal_computeObservationLikelihood(
+	const mrpt::obs::CObservation& obs,
+	const mrpt::poses::CPose3D& takenFrom) const
+{
+	const auto* scan =
+		dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs);
+	if (!scan) return 0.0;
+	const TLikelihoodOptions& opts = likelihoodOptions;
+	opts.validate();
+	const std::shared_ptr<const LikelihoodField> field = likelihoodField();
+
+	const mrpt::poses::CPose3D sensorPose = takenFrom + scan->sensorPose;
+	// Per ray: log(zRandom / maxRange + zHit exp(-d^2 / (2 sigma^2))), as
+	// the log-sum of its two terms; a zero weight is a term of log 0.
+	constexpr double kLogZero = -std::numeric_limits<double>::infinity();
+	const double logRandom =
+		opts.zRandom > 0.0 ? std::log(opts.zRandom / opts.maxRange) : kLogZero;
+	const double logHit = opts.zHit > 0.0 ? std::log(opts.zHit) : kLogZero;
+	const double inverseTwoVariance = 1.0 / (2.0 * opts.sigma * opts.sigma);
+	// Halfway to the cut: neither a hit nor a miss.
+	const double neutralDistance = 0.5 * opts.maxCorrsDistance;
+
+	const std::size_t n = scan->getScanSize();
+	double logLikelihood = 0.0;
+	for (std::size_t i = 0; i < n; i += opts.decimation)
+	{
+		const double r = scan->getScanRange(i);
+		if (!scan->getScanRangeValidity(i) || !std::isfinite(r) || r <= 0.0 ||
+			r >= opts.maxRange)
+			continue;
+		// A single-beam scan looks straight ahead, as insertion reads it.
+		const double angle = n > 1 ? scan->getScanAngle(i) : 0.0;
+		double gx, gy, gz;
+		sensorPose.composePoint(
+			r * std::cos(angle), r * std::sin(angle), 0.0, gx, gy, gz);
+
+		double d;
+		bool unseen;
+		field->lookup(gx, gy, d, unseen);
+		// No obstacle within the cut: the exact cut, not its float copy.
+		if (d >= static_cast<double>(field->cutDistance))
+			d = unseen && opts.unknownAsNeutral ? neutralDistance
+												: opts.maxCorrsDistance;
+		logLikelihood += logAddExp(logRandom, logHit - d * d * inverseTwoVariance);
+	}
+	return logLikelihood;
+}
+
+bool CEvidentialGridMap2D::internal_canComputeObservationLikelihood(
+	const mrpt::obs::CObservation& obs) const
+{
+	return dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs) !=
+		nullptr;
+}
+
+}  // namespace mrpt_evidential

@@ -1,0 +1,160 @@
+/* mrpt-evidential: internal: strict reading of .ini keys.
+ * MRPT's own readers turn a mistyped number into 0 and an enum's digit into
+ * any value; these reject both and name the section, key and value. */
+#pragma once
+
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/typemeta/TEnumType.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <ostream>
+#include <type_traits>
+#include <stdexcept>
+#include <string>
+
+namespace mrpt_evidential::detail
+{
+[[noreturn]] inline void throwBadValue(
+	const std::string& section, const std::string& key, const std::string& value,
+	const std::string& expected)
+{
+	throw std::invalid_argument(
+		"[" + section + "] " + key + " = '" + value + "': " + expected);
+}
+
+/** The first word of a key, or "" when absent. */
+inline std::string readWord(
+	const mrpt::config::CConfigFileBase& source, const std::string& section,
+	const std::string& key)
+{
+	return source.read_string_first_word(section, key, "", false);
+}
+
+/** Reads a number into `value` when the key is present.
+ * \throws std::invalid_argument if the text is not a finite number. */
+inline void readDouble(
+	const mrpt::config::CConfigFileBase& source, const std::string& section,
+	const std::string& key, double& value)
+{
+	const std::string text = readWord(source, section, key);
+	if (text.empty()) return;
+	char* end = nullptr;
+	errno = 0;
+	const double v = std::strtod(text.c_str(), &end);
+	if (end == text.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+		throwBadValue(section, key, text, "not a finite number");
+	value = v;
+}
+
+/** Reads an angle given in degrees into `radians` when the key is present. */
+inline void readDegrees(
+	const mrpt::config::CConfigFileBase& source, const std::string& section,
+	const std::string& key, double& radians)
+{
+	double degrees = radians * 180.0 / M_PI;
+	readDouble(source, section, key, degrees);
+	radians = degrees * M_PI / 180.0;
+}
+
+/** Reads a whole number >= 0 when the key is present (1e8 is accepted). */
+template <typename Unsigned>
+void readCount(
+	const mrpt::config::CConfigFileBase& source, const std::string& section,
+	const std::string& key, Unsigned& value)
+{
+	double v = static_cast<double>(value);
+	readDouble(source, section, key, v);
+	if (!(v >= 0.0) || v != std::floor(v) ||
+		v > static_cast<double>(std::numeric_limits<Unsigned>::max()))
+		throwBadValue(
+			section, key, readWord(source, section, key),
+			"not a whole number >= 0 within range");
+	value = static_cast<Unsigned>(v);
+}
+
+/** Reads true/false (also 1/0, yes/no) when the key is present. */
+inline void readBool(
+	const mrpt::config::CConfigFileBase& source, const std::string& section,
+	const std::string& key, bool& value)
+{
+	const std::string text = readWord(source, section, key);
+	if (text.empty()) return;
+	if (text == "true" || text == "1" || text == "yes")
+		value = true;
+	else if (text == "false" || text == "0" || text == "no")
+		value = false;
+	else
+		throwBadValue(section, key, text, "not true or false");
+}
+
+/** Reads an enum by name (MRPT_ENUM_TYPE) when the key is present. */
+template <typename Enum>
+void readEnum(
+	const mrpt::config::CConfigFileBase& source, const std::string& section,
+	const std::string& key, Enum& value)
+{
+	const std::string text = readWord(source, section, key);
+	if (text.empty()) return;
+	try
+	{
+		value = mrpt::typemeta::TEnumType<Enum>::name2value(text);
+	}
+	catch (const std::exception&)
+	{
+		std::string names;
+		for (const auto& entry : mrpt::typemeta::TEnumType<Enum>::getBimap())
+			names += (names.empty() ? "" : ", ") + entry.second;
+		throwBadValue(section, key, text, "not one of " + names);
+	}
+}
+
+/** Name of an enum value, for dumps. */
+template <typename Enum>
+std::string enumName(Enum value)
+{
+	return mrpt::typemeta::TEnumType<Enum>::value2name(value);
+}
+
+}  // namespace mrpt_evidential::detail
+
+namespace mrpt_evidential::detail
+{
+/** Writes a key so that reading it back gives the same value exactly. */
+inline void writeValue(
+	mrpt::config::CConfigFileBase& target, const std::string& section,
+	const std::string& key, double value, const std::string& comment)
+{
+	char text[40];
+	std::snprintf(text, sizeof(text), "%.17g", value);
+	target.write(section, key, std::string(text), -1, -1, comment);
+}
+inline void writeValue(
+	mrpt::config::CConfigFileBase& target, const std::string& section,
+	const std::string& key, bool value, const std::string& comment)
+{
+	target.write(section, key, std::string(value ? "true" : "false"), -1, -1, comment);
+}
+template <typename Enum, typename = std::enable_if_t<std::is_enum_v<Enum>>>
+void writeValue(
+	mrpt::config::CConfigFileBase& target, const std::string& section,
+	const std::string& key, Enum value, const std::string& comment)
+{
+	target.write(section, key, enumName(value), -1, -1, comment);
+}
+
+/** Prints options as the .ini lines saveToConfigFile() writes. */
+inline void dumpAsIni(
+	const mrpt::config::CLoadableOptions& options, const std::string& title,
+	std::ostream& out)
+{
+	mrpt::config::CConfigFileMemory ini;
+	options.saveToConfigFile(ini, title);
+	out << ini.getContent();
+}
+}  // namespace mrpt_evidential::detail

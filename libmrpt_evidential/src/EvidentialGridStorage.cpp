@@ -1,0 +1,184 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT. */
+
+#include <mrpt_evidential/EvidentialGridStorage.h>
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace mrpt_evidential
+{
+namespace
+{
+/** Above this exponent the gains are rebased, long before exp() overflows. */
+constexpr double kMaxGainExponent = 200.0;
+
+/** Number of cells needed to cover a length, at least 1. */
+double cellsFor(double length, double resolution)
+{
+	return std::max(1.0, std::ceil(length / resolution - 1e-9));
+}
+}  // namespace
+
+void EvidentialGridStorage::reset(
+	double xMin, double xMax, double yMin, double yMax, double resolution,
+	std::size_t maxCells)
+{
+	if (!(resolution > 0.0 && std::isfinite(resolution)))
+		throw std::invalid_argument(
+			"resolution must be a positive finite number, got " +
+			std::to_string(resolution));
+	for (const double v : {xMin, xMax, yMin, yMax})
+		if (!std::isfinite(v))
+			throw std::invalid_argument("grid bounds must be finite numbers");
+	if (!(xMin < xMax) || !(yMin < yMax))
+		throw std::invalid_argument(
+			"grid bounds need min < max, got x [" + std::to_string(xMin) + ", " +
+			std::to_string(xMax) + "] y [" + std::to_string(yMin) + ", " +
+			std::to_string(yMax) + "]");
+	const double sx = cellsFor(xMax - xMin, resolution);
+	const double sy = cellsFor(yMax - yMin, resolution);
+	if (sx * sy > static_cast<double>(maxCells) ||
+		std::max(sx, sy) > std::numeric_limits<int>::max())
+		throw std::invalid_argument(
+			"a grid of " + std::to_string(sx) + " x " + std::to_string(sy) +
+			" cells exceeds the budget of " + std::to_string(maxCells) +
+			" cells");
+	m_geometry = {xMin, yMin, resolution, static_cast<int>(sx), static_cast<int>(sy)};
+	m_cells.assign(m_geometry.cellCount(), QuantizedCell{});
+	m_stampTimes.assign(1, 0.0);
+	m_stampGain.assign(1, 1.0);
+	m_presentGain = 1.0;
+	m_currentStamp = 0;
+	m_insertions = 0;
+}
+
+bool EvidentialGridStorage::growToInclude(
+	double xMin, double xMax, double yMin, double yMax, double margin,
+	std::size_t maxCells)
+{
+	for (const double v : {xMin, xMax, yMin, yMax, margin})
+		if (!std::isfinite(v)) return false;
+	const GridGeometry& g = m_geometry;
+	const double res = g.resolution;
+	const bool growLeft = xMin < g.xMin, growRight = xMax > g.xMax();
+	const bool growDown = yMin < g.yMin, growUp = yMax > g.yMax();
+	if (!growLeft && !growRight && !growDown && !growUp) return true;
+
+	const double addLeft = growLeft ? cellsFor(g.xMin - xMin + margin, res) : 0;
+	const double addRight = growRight ? cellsFor(xMax - g.xMax() + margin, res) : 0;
+	const double addDown = growDown ? cellsFor(g.yMin - yMin + margin, res) : 0;
+	const double addUp = growUp ? cellsFor(yMax - g.yMax() + margin, res) : 0;
+	const double sx = g.sizeX + addLeft + addRight;
+	const double sy = g.sizeY + addDown + addUp;
+	if (sx * sy > static_cast<double>(maxCells) ||
+		std::max(sx, sy) > std::numeric_limits<int>::max())
+		return false;
+
+	GridGeometry grown{
+		g.xMin - addLeft * res, g.yMin - addDown * res, res, static_cast<int>(sx),
+		static_cast<int>(sy)};
+	// New cells are vacuous: their stamp does not matter, vacuous never decays.
+	std::vector<QuantizedCell> cells(grown.cellCount(), QuantizedCell{});
+	const int dx = static_cast<int>(addLeft), dy = static_cast<int>(addDown);
+	for (int cy = 0; cy < g.sizeY; ++cy)
+		std::copy_n(
+			m_cells.begin() + static_cast<std::ptrdiff_t>(g.index(0, cy)),
+			g.sizeX,
+			cells.begin() + static_cast<std::ptrdiff_t>(grown.index(dx, cy + dy)));
+	m_cells.swap(cells);
+	m_geometry = grown;
+	return true;
+}
+
+void EvidentialGridStorage::setDecayRate(double perSecond)
+{
+	if (!(perSecond >= 0.0 && std::isfinite(perSecond)))
+		throw std::invalid_argument(
+			"decay rate must be a finite number >= 0, got " +
+			std::to_string(perSecond));
+	if (perSecond == m_decayRate) return;
+	// Cells decay under the old rate up to now, under the new one from now on.
+	rebaseStamps();
+	m_decayRate = perSecond;
+	updateGains();
+}
+
+void EvidentialGridStorage::beginInsertion(double t)
+{
+	if (!std::isfinite(t))
+		throw std::invalid_argument("insertion time must be a finite number");
+	if (m_insertions++ == 0)
+	{
+		m_stampTimes.assign(1, t);
+		updateGains();
+		m_currentStamp = 0;
+		return;
+	}
+	if (t <= latestTime()) return;  // same stamp: nothing decays
+	if (m_stampTimes.size() >= kMaxStamps ||
+		m_decayRate * (t - m_stampTimes.front()) > kMaxGainExponent)
+		rebaseStamps();
+	const double sinceOrigin = t - m_stampTimes.front();
+	m_stampTimes.push_back(t);
+	m_stampGain.push_back(std::exp(m_decayRate * sinceOrigin));
+	m_presentGain = std::exp(-m_decayRate * sinceOrigin);
+	m_currentStamp = static_cast<std::uint16_t>(m_stampTimes.size() - 1);
+}
+
+void EvidentialGridStorage::rebaseStamps()
+{
+	if (m_decayRate > 0.0)
+		for (QuantizedCell& c : m_cells)
+			if (c.stamp != m_currentStamp)
+				encodeMass(decayed(c, decayFactor(c.stamp)), c);
+	for (QuantizedCell& c : m_cells) c.stamp = 0;
+	m_stampTimes.assign(1, latestTime());
+	m_currentStamp = 0;
+	updateGains();
+}
+
+void EvidentialGridStorage::updateGains()
+{
+	const double origin = m_stampTimes.front();
+	m_stampGain.resize(m_stampTimes.size());
+	for (std::size_t s = 0; s < m_stampTimes.size(); ++s)
+		m_stampGain[s] = std::exp(m_decayRate * (m_stampTimes[s] - origin));
+	m_presentGain = std::exp(-m_decayRate * (latestTime() - origin));
+}
+
+void EvidentialGridStorage::assign(
+	const GridGeometry& geometry, std::vector<QuantizedCell> cells,
+	std::vector<double> stampTimes, std::size_t insertions, double decayRate)
+{
+	if (!(geometry.resolution > 0.0 && std::isfinite(geometry.resolution)) ||
+		!std::isfinite(geometry.xMin) || !std::isfinite(geometry.yMin) ||
+		geometry.sizeX < 0 || geometry.sizeY < 0)
+		throw std::invalid_argument("invalid grid geometry");
+	if (cells.size() != geometry.cellCount())
+		throw std::invalid_argument(
+			"cell count " + std::to_string(cells.size()) +
+			" does not match the geometry");
+	if (stampTimes.empty() || stampTimes.size() > kMaxStamps)
+		throw std::invalid_argument("invalid number of insertion times");
+	for (std::size_t i = 0; i < stampTimes.size(); ++i)
+		if (!std::isfinite(stampTimes[i]) ||
+			(i > 0 && stampTimes[i] < stampTimes[i - 1]))
+			throw std::invalid_argument("insertion times must be finite and ordered");
+	if (!(decayRate >= 0.0 && std::isfinite(decayRate)) ||
+		decayRate * (stampTimes.back() - stampTimes.front()) > kMaxGainExponent)
+		throw std::invalid_argument("invalid decay rate");
+	for (const QuantizedCell& c : cells)
+		if (!isConsistent(c) || c.stamp >= stampTimes.size())
+			throw std::invalid_argument("a cell holds an invalid mass or stamp");
+	m_geometry = geometry;
+	m_cells = std::move(cells);
+	m_stampTimes = std::move(stampTimes);
+	m_insertions = insertions;
+	m_decayRate = decayRate;
+	m_currentStamp = static_cast<std::uint16_t>(m_stampTimes.size() - 1);
+	updateGains();
+}
+
+}  // namespace mrpt_evidential

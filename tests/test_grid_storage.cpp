@@ -1,0 +1,239 @@
+/* The grid's storage: fixed-point cells, geometry, growth and lazy decay. */
+#include <mrpt_evidential/EvidentialGridStorage.h>
+#include <mrpt_evidential/QuantizedMass.h>
+#include <mrpt_evidential/combination.h>
+
+#include <cmath>
+#include <limits>
+
+#include "test_helpers.h"
+
+using namespace mrpt_evidential;
+
+TEST(QuantizedMass, EveryStoredValueRoundTrips)
+{
+	for (std::uint32_t q = 0; q <= 65535; ++q)
+		ASSERT_EQ(quantizeMass(q / kMassScale), q) << q;
+}
+
+TEST(QuantizedMass, ClampsOutOfRangeValues)
+{
+	EXPECT_EQ(quantizeMass(-0.5), 0);
+	EXPECT_EQ(quantizeMass(std::numeric_limits<double>::quiet_NaN()), 0);
+	EXPECT_EQ(quantizeMass(1.5), 65535);
+	EXPECT_EQ(quantizeMass(std::numeric_limits<double>::infinity()), 65535);
+}
+
+TEST(QuantizedMass, EncodedMassesStayValidAndClose)
+{
+	test::MassGenerator gen(3);
+	for (int i = 0; i < 1'000'000; ++i)
+	{
+		const Mass m = gen();
+		QuantizedCell c;
+		encodeMass(m, c);
+		ASSERT_TRUE(isConsistent(c));
+		const Mass back = decodeMass(c);
+		ASSERT_TRUE(back.isValid(1e-12)) << back;
+		// Three roundings to nearest, and at most one step given back by the
+		// largest: every mass within 2 steps.
+		ASSERT_LE(maxAbsDifference(back, m), 2.0 / kMassScale) << m;
+	}
+	QuantizedCell c;
+	encodeMass(Mass::vacuous(), c);
+	EXPECT_EQ(decodeMass(c), Mass::vacuous());
+	encodeMass(Mass::degenerate(), c);
+	EXPECT_EQ(decodeMass(c), Mass::degenerate());
+	// Three masses of 1/3 round up together: the sum must not pass the scale.
+	encodeMass(Mass{1.0 / 3, 1.0 / 3, 1.0 / 3, 0.0}, c);
+	EXPECT_TRUE(isConsistent(c));
+	EXPECT_GE(decodeMass(c).unknown, 0.0);
+}
+
+TEST(QuantizedMass, ManyFusionsStayCloseToDoublePrecision)
+{
+	// 1000 fusions of sensor-like evidence through the 8-byte cell against the
+	// same fusions in double precision, for every rule, with and without a
+	// decay between fusions. Dempster's rule without decay is left out: once
+	// a cell is all but dogmatic its result hinges on masses far below any
+	// fixed-point step (or on rounding in double precision itself), so no
+	// finite precision follows it; with decay the cell never gets there.
+	struct Case
+	{
+		FusionRule rule;
+		double decayPerFusion;
+	};
+	std::vector<Case> cases;
+	for (const FusionRule rule :
+		 {FusionRule::Conjunctive, FusionRule::Dempster, FusionRule::Yager,
+		  FusionRule::DuboisPrade, FusionRule::Cautious})
+		for (const double decay : {0.0, 0.02})
+			if (!(rule == FusionRule::Dempster && decay == 0.0))
+				cases.push_back({rule, decay});
+	for (const Case& c : cases)
+	{
+		test::MassGenerator gen(11);
+		std::uniform_real_distribution<double> u(0.0, 1.0);
+		for (int trial = 0; trial < 20; ++trial)
+		{
+			Mass exact = Mass::vacuous();
+			QuantizedCell cell;
+			encodeMass(exact, cell);
+			for (int k = 0; k < 1000; ++k)
+			{
+				const double w = 0.9 * u(gen.rng());
+				const Mass obs = u(gen.rng()) < 0.5 ? Mass::simpleFree(w)
+													 : Mass::simpleOccupied(w);
+				exact = combine(c.rule, discount(exact, c.decayPerFusion), obs);
+				encodeMass(
+					combine(c.rule, discount(decodeMass(cell), c.decayPerFusion), obs),
+					cell);
+			}
+			EXPECT_LE(maxAbsDifference(decodeMass(cell), exact), 1e-3)
+				<< "rule " << static_cast<int>(c.rule) << " decay "
+				<< c.decayPerFusion << " trial " << trial;
+		}
+	}
+}
+
+TEST(GridStorage, GeometryAndBadArguments)
+{
+	EvidentialGridStorage s;
+	s.reset(-1.0, 1.0, 0.0, 0.55, 0.1, 1000);
+	EXPECT_EQ(s.geometry().sizeX, 20);
+	EXPECT_EQ(s.geometry().sizeY, 6);  // 0.55 m needs 6 cells
+	EXPECT_EQ(s.cells().size(), 120u);
+	EXPECT_EQ(s.geometry().cellX(-1.0), 0);
+	EXPECT_EQ(s.geometry().cellX(0.95), 19);
+	EXPECT_NEAR(s.geometry().cellCenterX(0), -0.95, 1e-12);
+	for (std::size_t i = 0; i < s.cells().size(); ++i)
+		EXPECT_EQ(s.read(i), Mass::vacuous());
+	EXPECT_THROW(s.reset(0, 1, 0, 1, 0.0, 1000), std::invalid_argument);
+	EXPECT_THROW(s.reset(0, 1, 0, 1, -0.1, 1000), std::invalid_argument);
+	EXPECT_THROW(s.reset(1, 1, 0, 1, 0.1, 1000), std::invalid_argument);
+	EXPECT_THROW(s.reset(0, 1, 2, 1, 0.1, 1000), std::invalid_argument);
+	EXPECT_THROW(
+		s.reset(0, std::numeric_limits<double>::quiet_NaN(), 0, 1, 0.1, 1000),
+		std::invalid_argument);
+	EXPECT_THROW(s.reset(0, 100, 0, 100, 0.1, 1000), std::invalid_argument);
+	EXPECT_THROW(s.setDecayRate(-1.0), std::invalid_argument);
+	EXPECT_THROW(
+		s.beginInsertion(std::numeric_limits<double>::infinity()),
+		std::invalid_argument);
+}
+
+TEST(GridStorage, GrowthKeepsCellsInPlace)
+{
+	EvidentialGridStorage s;
+	s.reset(0.0, 1.0, 0.0, 1.0, 0.1, 10'000);
+	s.beginInsertion(0.0);
+	const Mass m = Mass::simpleOccupied(0.8);
+	s.write(s.geometry().index(3, 7), m);  // the cell around (0.35, 0.75)
+
+	EXPECT_TRUE(s.growToInclude(0.2, 0.8, 0.2, 0.8, 1.0, 10'000));  // inside
+	EXPECT_EQ(s.geometry().sizeX, 10);
+
+	ASSERT_TRUE(s.growToInclude(-2.05, 0.5, 0.5, 3.0, 1.0, 10'000));
+	const GridGeometry& g = s.geometry();
+	EXPECT_LE(g.xMin, -3.05);
+	EXPECT_GE(g.yMax(), 4.0);
+	EXPECT_EQ(g.yMin, 0.0);  // sides that did not need to grow stay
+	EXPECT_NEAR(g.xMax(), 1.0, 1e-9);
+	const int cx = g.cellX(0.35), cy = g.cellY(0.75);
+	EXPECT_MASS_NEAR(s.read(g.index(cx, cy)), m, 2.0 / kMassScale);
+	std::size_t nonVacuous = 0;
+	for (std::size_t i = 0; i < s.cells().size(); ++i)
+		if (s.read(i) != Mass::vacuous()) ++nonVacuous;
+	EXPECT_EQ(nonVacuous, 1u);
+
+	// Beyond the budget: refused, nothing changes.
+	const GridGeometry before = s.geometry();
+	EXPECT_FALSE(s.growToInclude(0, 1000, 0, 1, 1.0, 10'000));
+	EXPECT_FALSE(s.growToInclude(
+		0, std::numeric_limits<double>::quiet_NaN(), 0, 1, 1.0, 10'000));
+	EXPECT_EQ(s.geometry().sizeX, before.sizeX);
+	EXPECT_EQ(s.geometry().xMin, before.xMin);
+}
+
+TEST(GridStorage, DecayFollowsTheExponentialLaw)
+{
+	EvidentialGridStorage s;
+	s.reset(0, 1, 0, 1, 0.5, 100);
+	const double rate = 0.2;
+	s.setDecayRate(rate);
+	const Mass m{0.1, 0.5, 0.3, 0.1};
+	s.beginInsertion(100.0);
+	s.write(0, m);
+	EXPECT_MASS_NEAR(s.read(0), m, 2.0 / kMassScale);
+	for (const double t : {100.5, 101.0, 103.0, 110.0, 150.0})
+	{
+		s.beginInsertion(t);
+		const Mass expected = discount(m, 1.0 - std::exp(-rate * (t - 100.0)));
+		EXPECT_MASS_NEAR(s.read(0), expected, 2.0 / kMassScale) << "t " << t;
+		EXPECT_EQ(s.read(1), Mass::vacuous());
+	}
+	// Back in time: nothing un-decays.
+	const Mass at150 = s.read(0);
+	s.beginInsertion(120.0);
+	EXPECT_EQ(s.read(0), at150);
+	EXPECT_EQ(s.latestTime(), 150.0);
+}
+
+TEST(GridStorage, ChangingTheRateKeepsPastDecay)
+{
+	EvidentialGridStorage s;
+	s.reset(0, 1, 0, 1, 0.5, 100);
+	s.setDecayRate(0.1);
+	s.beginInsertion(0.0);
+	const Mass m = Mass::simpleFree(0.9);
+	s.write(0, m);
+	s.beginInsertion(5.0);
+	s.setDecayRate(0.5);
+	s.beginInsertion(7.0);
+	const double keep = std::exp(-0.1 * 5.0) * std::exp(-0.5 * 2.0);
+	EXPECT_MASS_NEAR(s.read(0), discount(m, 1.0 - keep), 3.0 / kMassScale);
+}
+
+TEST(GridStorage, StampsRebaseWithoutChangingMasses)
+{
+	// More insertion times than stamps, and a decay exponent past the rebase
+	// threshold: reads must follow the law throughout.
+	EvidentialGridStorage s;
+	s.reset(0, 2, 0, 1, 1.0, 100);
+	const double rate = 0.002;
+	s.setDecayRate(rate);
+	s.beginInsertion(0.0);
+	const Mass m = Mass::simpleOccupied(1.0);
+	s.write(0, m);
+	const std::size_t n = EvidentialGridStorage::kMaxStamps + 5000;
+	for (std::size_t i = 1; i <= n; ++i)
+	{
+		s.beginInsertion(static_cast<double>(i));
+		s.write(1, Mass::simpleFree(0.5));  // a cell written every time
+	}
+	const double keep = std::exp(-rate * static_cast<double>(n));
+	// Each rebase re-stores the cell: a few quantization steps at most.
+	EXPECT_NEAR(s.read(0).occupied, keep, 4.0 / kMassScale);
+	EXPECT_MASS_NEAR(s.read(1), Mass::simpleFree(0.5), 2.0 / kMassScale);
+	EXPECT_EQ(s.insertionCount(), n + 1);
+	EXPECT_LT(s.stampTimes().size(), EvidentialGridStorage::kMaxStamps);
+}
+
+TEST(GridStorage, AssignRejectsInconsistentState)
+{
+	EvidentialGridStorage s;
+	GridGeometry g{0.0, 0.0, 0.1, 2, 2};
+	std::vector<QuantizedCell> cells(4);
+	EXPECT_NO_THROW(s.assign(g, cells, {0.0, 1.0}, 2, 0.1));
+	EXPECT_EQ(s.geometry().sizeX, 2);
+	EXPECT_THROW(s.assign(g, std::vector<QuantizedCell>(3), {0.0}, 1, 0.0), std::invalid_argument);
+	EXPECT_THROW(s.assign(g, cells, {}, 1, 0.0), std::invalid_argument);
+	EXPECT_THROW(s.assign(g, cells, {1.0, 0.0}, 1, 0.0), std::invalid_argument);
+	EXPECT_THROW(s.assign(g, cells, {0.0}, 1, -1.0), std::invalid_argument);
+	cells[1].free = 40000;
+	cells[1].occupied = 40000;
+	EXPECT_THROW(s.assign(g, cells, {0.0}, 1, 0.0), std::invalid_argument);
+	cells[1] = QuantizedCell{};
+	cells[2].stamp = 5;
+	EXPECT_THROW(s.assign(g, cells, {0.0}, 1, 0.0), std::invalid_argument);
+}

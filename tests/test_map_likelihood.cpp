@@ -1,0 +1,610 @@
+/* Likelihood of scans in CEvidentialGridMap2D: options, the likelihood field
+ * against a brute-force one, pose discrimination on synthetic and real data,
+ * cache invalidation and concurrent first use. */
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/core/Clock.h>
+#include <mrpt/maps/CSimpleMap.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/poses/CPose3D.h>
+#include <mrpt/poses/CPose3DPDF.h>
+#include <mrpt_evidential/CEvidentialGridMap2D.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <random>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+using mrpt::obs::CObservation2DRangeScan;
+using mrpt::poses::CPose2D;
+using mrpt::poses::CPose3D;
+using mrpt_evidential::CEvidentialGridMap2D;
+
+namespace
+{
+using Options = CEvidentialGridMap2D::TLikelihoodOptions;
+
+double deg(double d) { return d * M_PI / 180.0; }
+
+// ---------------------------------------------------------------------------
+// Options
+// ---------------------------------------------------------------------------
+
+mrpt::config::CConfigFileMemory iniWith(const std::string& lines)
+{
+	return mrpt::config::CConfigFileMemory("[likelihoodOpts]\n" + lines);
+}
+
+TEST(LikelihoodOptions, LoadsEveryKey)
+{
+	const auto ini = iniWith(
+		"occupiedMass = 0.45\nmaxCorrsDistance = 0.6\nsigma = 0.2\n"
+		"zHit = 0.8\nzRandom = 0.2\nmaxRange = 30\ndecimation = 3\n"
+		"unknownAsNeutral = false\n");
+	Options o;
+	o.loadFromConfigFile(ini, "likelihoodOpts");
+	EXPECT_DOUBLE_EQ(o.occupiedMass, 0.45);
+	EXPECT_DOUBLE_EQ(o.maxCorrsDistance, 0.6);
+	EXPECT_DOUBLE_EQ(o.sigma, 0.2);
+	EXPECT_DOUBLE_EQ(o.zHit, 0.8);
+	EXPECT_DOUBLE_EQ(o.zRandom, 0.2);
+	EXPECT_DOUBLE_EQ(o.maxRange, 30.0);
+	EXPECT_EQ(o.decimation, 3u);
+	EXPECT_FALSE(o.unknownAsNeutral);
+}
+
+TEST(LikelihoodOptions, AbsentKeysKeepTheirValues)
+{
+	Options o;
+	o.sigma = 0.5;
+	o.decimation = 7;
+	o.unknownAsNeutral = false;
+	o.loadFromConfigFile(iniWith("zHit = 0.9\n"), "likelihoodOpts");
+	EXPECT_DOUBLE_EQ(o.zHit, 0.9);
+	EXPECT_DOUBLE_EQ(o.sigma, 0.5);
+	EXPECT_EQ(o.decimation, 7u);
+	EXPECT_FALSE(o.unknownAsNeutral);
+	EXPECT_DOUBLE_EQ(o.occupiedMass, Options().occupiedMass);
+	// A missing section is all absent keys.
+	Options untouched;
+	untouched.loadFromConfigFile(iniWith(""), "noSuchSection");
+	EXPECT_DOUBLE_EQ(untouched.maxRange, Options().maxRange);
+}
+
+TEST(LikelihoodOptions, InvalidValuesThrowNamingKeyAndValue)
+{
+	struct Case
+	{
+		std::string key, value;
+	};
+	const std::vector<Case> cases{
+		{"occupiedMass", "0"},		 {"occupiedMass", "1.5"},
+		{"occupiedMass", "nan"},	 {"maxCorrsDistance", "0"},
+		{"maxCorrsDistance", "inf"}, {"sigma", "-1"},
+		{"sigma", "abc"},			 {"sigma", "0.3x"},
+		{"zHit", "-0.1"},			 {"zRandom", "-2"},
+		{"maxRange", "0"},			 {"maxRange", "-5"},
+		{"decimation", "0"},		 {"decimation", "-3"},
+		{"decimation", "2.5"},		 {"unknownAsNeutral", "maybe"}};
+	for (const Case& c : cases)
+	{
+		Options o;
+		const Options before = o;
+		try
+		{
+			o.loadFromConfigFile(
+				iniWith(c.key + " = " + c.value + "\n"), "likelihoodOpts");
+			ADD_FAILURE() << c.key << " = " << c.value << " was accepted";
+		}
+		catch (const std::invalid_argument& e)
+		{
+			const std::string what = e.what();
+			EXPECT_NE(what.find("likelihoodOpts"), std::string::npos) << what;
+			EXPECT_NE(what.find(c.key), std::string::npos) << what;
+			EXPECT_NE(what.find(c.value), std::string::npos) << what;
+		}
+		// A failed load changes nothing.
+		EXPECT_DOUBLE_EQ(o.sigma, before.sigma);
+		EXPECT_DOUBLE_EQ(o.occupiedMass, before.occupiedMass);
+		EXPECT_EQ(o.decimation, before.decimation);
+	}
+	// Both weights at zero: the message names both.
+	Options o;
+	try
+	{
+		o.loadFromConfigFile(iniWith("zHit = 0\nzRandom = 0\n"), "likelihoodOpts");
+		ADD_FAILURE() << "zHit = zRandom = 0 was accepted";
+	}
+	catch (const std::invalid_argument& e)
+	{
+		const std::string what = e.what();
+		EXPECT_NE(what.find("zHit"), std::string::npos) << what;
+		EXPECT_NE(what.find("zRandom"), std::string::npos) << what;
+	}
+	// validate() sees values set in code; the example message of the header.
+	o = Options();
+	o.sigma = -1;
+	try
+	{
+		o.validate();
+		ADD_FAILURE() << "sigma = -1 was accepted";
+	}
+	catch (const std::invalid_argument& e)
+	{
+		EXPECT_STREQ(e.what(), "likelihoodOpts: sigma must be > 0 and finite, got -1");
+	}
+}
+
+TEST(LikelihoodOptions, DumpHasEveryKeyAndReadsBack)
+{
+	Options o;
+	o.sigma = 0.25;
+	o.decimation = 2;
+	o.unknownAsNeutral = false;
+	std::ostringstream out;
+	o.dumpToTextStream(out);
+	const std::string dump = out.str();
+	for (const char* key :
+		 {"occupiedMass", "maxCorrsDistance", "sigma", "zHit", "zRandom",
+		  "maxRange", "decimation", "unknownAsNeutral"})
+		EXPECT_NE(dump.find(key), std::string::npos) << key << "\n" << dump;
+	EXPECT_NE(dump.find(" m"), std::string::npos) << dump;
+	// The dump is valid .ini text.
+	Options back;
+	back.loadFromConfigFile(iniWith(dump), "likelihoodOpts");
+	EXPECT_DOUBLE_EQ(back.sigma, 0.25);
+	EXPECT_EQ(back.decimation, 2u);
+	EXPECT_FALSE(back.unknownAsNeutral);
+}
+
+// ---------------------------------------------------------------------------
+// Synthetic world: a room with obstacles, scans ray-cast against it
+// ---------------------------------------------------------------------------
+
+struct Segment
+{
+	double x0, y0, x1, y1;
+};
+
+void addBox(std::vector<Segment>& w, double x0, double y0, double x1, double y1)
+{
+	w.push_back({x0, y0, x1, y0});
+	w.push_back({x1, y0, x1, y1});
+	w.push_back({x1, y1, x0, y1});
+	w.push_back({x0, y1, x0, y0});
+}
+
+/** An asymmetric room, so that every shift and turn changes what fits. */
+std::vector<Segment> room()
+{
+	std::vector<Segment> w;
+	addBox(w, -4.0, -3.0, 5.0, 3.5);
+	addBox(w, 1.0, 0.5, 2.0, 1.2);
+	addBox(w, -2.0, -1.5, -1.6, -1.1);
+	w.push_back({-4.0, 1.5, -2.5, 3.5});
+	w.push_back({3.0, -3.0, 3.0, -1.8});
+	return w;
+}
+
+/** Range along a ray to the nearest segment, +inf if none. */
+double castRay(
+	const std::vector<Segment>& walls, double x, double y, double angle)
+{
+	const double dx = std::cos(angle), dy = std::sin(angle);
+	double best = std::numeric_limits<double>::infinity();
+	for (const Segment& s : walls)
+	{
+		const double ex = s.x1 - s.x0, ey = s.y1 - s.y0;
+		const double den = dx * ey - dy * ex;
+		if (std::abs(den) < 1e-12) continue;
+		const double wx = s.x0 - x, wy = s.y0 - y;
+		const double t = (wx * ey - wy * ex) / den;  // along the ray
+		const double u = (wx * dy - wy * dx) / den;  // along the segment
+		if (t > 1e-9 && u >= 0.0 && u <= 1.0) best = std::min(best, t);
+	}
+	return best;
+}
+
+/** A 270-degree, 541-ray scan taken by a robot at `robot` whose sensor sits
+ * 0.2 m ahead of it; rays beyond 30 m have no return. */
+CObservation2DRangeScan makeScan(
+	const std::vector<Segment>& walls, const CPose2D& robot, double time)
+{
+	CObservation2DRangeScan scan;
+	scan.aperture = static_cast<float>(deg(270));
+	scan.rightToLeft = true;
+	scan.maxRange = 30.0f;
+	scan.sensorPose = CPose3D(0.2, 0.0, 0.3, 0.0, 0.0, 0.0);
+	scan.timestamp = mrpt::Clock::fromDouble(time);
+	scan.resizeScan(541);
+	const CPose2D sensor = robot + CPose2D(0.2, 0.0, 0.0);
+	for (std::size_t i = 0; i < scan.getScanSize(); ++i)
+	{
+		const double r = castRay(
+			walls, sensor.x(), sensor.y(), sensor.phi() + scan.getScanAngle(i));
+		const bool valid = r < scan.maxRange;
+		scan.setScanRange(i, valid ? static_cast<float>(r) : scan.maxRange);
+		scan.setScanRangeValidity(i, valid);
+	}
+	return scan;
+}
+
+const std::vector<CPose2D>& mappingPoses()
+{
+	static const std::vector<CPose2D> poses{
+		{0.0, 0.0, 0.0},
+		{2.5, -1.5, deg(90)},
+		{-2.5, 0.5, deg(200)},
+		{3.5, 2.2, deg(-100)},
+		{-1.0, 2.5, deg(-60)}};
+	return poses;
+}
+
+/** A map of the room built from every mapping pose. */
+void buildRoomMap(CEvidentialGridMap2D& map)
+{
+	const auto walls = room();
+	double t = 1.0;
+	for (const CPose2D& p : mappingPoses())
+		ASSERT_TRUE(map.insertObservation(makeScan(walls, p, t++), CPose3D(p)));
+}
+
+double score(
+	const CEvidentialGridMap2D& map, const CObservation2DRangeScan& scan,
+	const CPose2D& pose)
+{
+	return map.computeObservationLikelihood(scan, CPose3D(pose));
+}
+
+/** The six perturbed poses of the pose-discrimination tests. */
+std::vector<std::pair<std::string, CPose2D>> perturbations(const CPose2D& p)
+{
+	return {
+		{"x+0.3", {p.x() + 0.3, p.y(), p.phi()}},
+		{"x-0.3", {p.x() - 0.3, p.y(), p.phi()}},
+		{"y+0.3", {p.x(), p.y() + 0.3, p.phi()}},
+		{"y-0.3", {p.x(), p.y() - 0.3, p.phi()}},
+		{"yaw+5", {p.x(), p.y(), p.phi() + deg(5)}},
+		{"yaw-5", {p.x(), p.y(), p.phi() - deg(5)}}};
+}
+
+/** log of the per-ray likelihood at distance d, straight from the model. */
+double rayLogLikelihood(const Options& o, double d)
+{
+	return std::log(
+		o.zRandom / o.maxRange +
+		o.zHit * std::exp(-d * d / (2.0 * o.sigma * o.sigma)));
+}
+
+TEST(Likelihood, ScanScoresBestAtItsOwnPose)
+{
+	CEvidentialGridMap2D map;
+	buildRoomMap(map);
+	const auto walls = room();
+	// Poses that were not used for mapping, and one that was.
+	for (const CPose2D& truth :
+		 {CPose2D(0.5, -1.0, deg(30)), CPose2D(-1.0, 0.8, deg(135)),
+		  mappingPoses()[1]})
+	{
+		const auto scan = makeScan(walls, truth, 100.0);
+		const double own = score(map, scan, truth);
+		EXPECT_TRUE(std::isfinite(own));
+		for (const auto& [name, moved] : perturbations(truth))
+			EXPECT_GT(own, score(map, scan, moved))
+				<< "at " << truth.asString() << " moved " << name;
+	}
+}
+
+TEST(Likelihood, OnlyScansCanBeScored)
+{
+	CEvidentialGridMap2D map;
+	buildRoomMap(map);
+	mrpt::obs::CObservationOdometry odometry;
+	odometry.odometry = CPose2D(1.0, 0.0, 0.0);
+	EXPECT_FALSE(map.canComputeObservationLikelihood(odometry));
+	EXPECT_EQ(map.computeObservationLikelihood(odometry, CPose3D()), 0.0);
+	const auto scan = makeScan(room(), CPose2D(), 1.0);
+	EXPECT_TRUE(map.canComputeObservationLikelihood(scan));
+}
+
+TEST(Likelihood, ScanWithoutValidRaysScoresZero)
+{
+	CEvidentialGridMap2D map;
+	buildRoomMap(map);
+	auto scan = makeScan(room(), CPose2D(), 1.0);
+	for (std::size_t i = 0; i < scan.getScanSize(); ++i)
+		scan.setScanRangeValidity(i, false);
+	EXPECT_EQ(score(map, scan, CPose2D()), 0.0);
+	// Rays at or beyond likelihoodOptions.maxRange are not scored either.
+	const auto valid = makeScan(room(), CPose2D(), 1.0);
+	map.likelihoodOptions.maxRange = 0.1;
+	EXPECT_EQ(score(map, valid, CPose2D()), 0.0);
+}
+
+TEST(Likelihood, NeverSeenCellsAndDecimation)
+{
+	// Nothing inserted: every ray ends in a never-seen cell, far from any
+	// obstacle, so every scored ray gives the same, known value.
+	CEvidentialGridMap2D map;
+	const auto scan = makeScan(room(), CPose2D(), 1.0);
+	std::size_t validRays = 0, validDecimated = 0;
+	for (std::size_t i = 0; i < scan.getScanSize(); ++i)
+		if (scan.getScanRangeValidity(i))
+		{
+			++validRays;
+			if (i % 5 == 0) ++validDecimated;
+		}
+	ASSERT_GT(validDecimated, 50u);
+	Options& o = map.likelihoodOptions;
+	o.decimation = 5;
+	EXPECT_NEAR(
+		score(map, scan, CPose2D()),
+		validDecimated * rayLogLikelihood(o, 0.5 * o.maxCorrsDistance), 1e-9);
+	o.decimation = 1;
+	EXPECT_NEAR(
+		score(map, scan, CPose2D()),
+		validRays * rayLogLikelihood(o, 0.5 * o.maxCorrsDistance), 1e-9);
+	// Not neutral: scored as a miss.
+	o.unknownAsNeutral = false;
+	EXPECT_NEAR(
+		score(map, scan, CPose2D()),
+		validRays * rayLogLikelihood(o, o.maxCorrsDistance), 1e-9);
+}
+
+TEST(Likelihood, TinySigmaStaysFinite)
+{
+	// The Gaussian term underflows to 0; the random term keeps the log finite,
+	// and without it the log of the Gaussian is exact.
+	CEvidentialGridMap2D map;
+	buildRoomMap(map);
+	const CPose2D pose(0.5, -1.0, deg(30));
+	const auto scan = makeScan(room(), pose, 100.0);
+	map.likelihoodOptions.sigma = 1e-4;
+	EXPECT_TRUE(std::isfinite(score(map, scan, pose)));
+	map.likelihoodOptions.zRandom = 0.0;
+	const double s = score(map, scan, pose);
+	EXPECT_TRUE(std::isfinite(s));
+	EXPECT_LT(s, -1e3);
+}
+
+/** The field against a brute-force one: single-ray scans ending at random
+ * points, each scored alone, must give the model's value for the distance
+ * from the point's cell to the nearest obstacle cell. */
+void checkFieldAgainstBruteForce(CEvidentialGridMap2D& map)
+{
+	const Options& o = map.likelihoodOptions;
+	const auto& g = map.geometry();
+	std::vector<std::pair<int, int>> obstacles;
+	for (int cy = 0; cy < g.sizeY; ++cy)
+		for (int cx = 0; cx < g.sizeX; ++cx)
+		{
+			const auto m = map.getCellMassesByIndex(cx, cy);
+			const double rest = m.free + m.occupied + m.unknown;
+			if (rest > 1e-12 && m.occupied / rest >= o.occupiedMass)
+				obstacles.emplace_back(cx, cy);
+		}
+	ASSERT_GT(obstacles.size(), 100u);
+
+	CObservation2DRangeScan ray;
+	ray.aperture = 0.0f;
+	ray.resizeScan(1);
+	ray.setScanRange(0, 1.0f);
+	ray.setScanRangeValidity(0, true);
+
+	std::mt19937 rng(7);
+	// Some probes land outside the map, in the field's margin and beyond.
+	std::uniform_real_distribution<double> ux(g.xMin - 1.0, g.xMax() + 1.0);
+	std::uniform_real_distribution<double> uy(g.yMin - 1.0, g.yMax() + 1.0);
+	std::size_t near = 0, unseenFar = 0;
+	for (int probe = 0; probe < 3000; ++probe)
+	{
+		// Mostly near the walls, where the distances are not all cut.
+		double x, y;
+		if (probe % 4 != 0)
+		{
+			const auto& [ox, oy] = obstacles[rng() % obstacles.size()];
+			std::uniform_real_distribution<double> jitter(-0.6, 0.6);
+			x = g.cellCenterX(ox) + jitter(rng);
+			y = g.cellCenterY(oy) + jitter(rng);
+		}
+		else
+			x = ux(rng), y = uy(rng);
+		const int px = g.cellX(x), py = g.cellY(y);
+		double best = std::numeric_limits<double>::infinity();
+		for (const auto& [ox, oy] : obstacles)
+			best = std::min(best, std::hypot(px - ox, py - oy) * g.resolution);
+		double d = std::min(best, o.maxCorrsDistance);
+		const bool unseen = !g.inside(px, py) ||
+			decide(map.getCellMassesByIndex(px, py)) ==
+				mrpt_evidential::Decision::Unknown;
+		if (unseen && best >= o.maxCorrsDistance && o.unknownAsNeutral)
+			d = 0.5 * o.maxCorrsDistance, ++unseenFar;
+		if (best < o.maxCorrsDistance) ++near;
+		// The ray starts 1 m behind the probe, along +x.
+		const double got = score(map, ray, CPose2D(x - 1.0, y, 0.0));
+		ASSERT_NEAR(got, rayLogLikelihood(o, d), 1e-5)
+			<< "probe (" << x << ", " << y << "), cell (" << px << ", " << py
+			<< "), nearest obstacle " << best << " m";
+	}
+	EXPECT_GT(near, 1000u);
+	if (o.unknownAsNeutral)
+	{
+		EXPECT_GT(unseenFar, 10u);
+	}
+}
+
+TEST(Likelihood, FieldMatchesBruteForce)
+{
+	CEvidentialGridMap2D map;
+	buildRoomMap(map);
+	checkFieldAgainstBruteForce(map);
+	// A cut that is not a whole number of cells, and a coarser threshold:
+	// changing the options rebuilds the field without any call.
+	map.likelihoodOptions.maxCorrsDistance = 0.45;
+	map.likelihoodOptions.occupiedMass = 0.6;
+	checkFieldAgainstBruteForce(map);
+	map.likelihoodOptions.unknownAsNeutral = false;
+	checkFieldAgainstBruteForce(map);
+}
+
+/** A scan of 181 rays over 90 degrees facing a wall x = wallX, taken from
+ * the origin at time t. */
+CObservation2DRangeScan wallScan(double wallX, double t)
+{
+	CObservation2DRangeScan scan;
+	scan.aperture = static_cast<float>(deg(90));
+	scan.timestamp = mrpt::Clock::fromDouble(t);
+	scan.resizeScan(181);
+	for (std::size_t i = 0; i < scan.getScanSize(); ++i)
+	{
+		scan.setScanRange(
+			i, static_cast<float>(wallX / std::cos(scan.getScanAngle(i))));
+		scan.setScanRangeValidity(i, true);
+	}
+	return scan;
+}
+
+TEST(Likelihood, ConflictIsSetAsideToFindObstacles)
+{
+	// A wall seen at x = 5.02, then at 5.12: the cell [5, 5.05) is hit once
+	// and passed through once, and holds mostly conflict.
+	CEvidentialGridMap2D map(-10, 10, -10, 10, 0.05);
+	ASSERT_TRUE(map.insertObservation(wallScan(5.02, 1.0), CPose3D()));
+	ASSERT_TRUE(map.insertObservation(wallScan(5.12, 2.0), CPose3D()));
+	const auto m = map.getCellMasses(5.025, 0.0);
+	ASSERT_GT(m.conflict, 0.5) << "conflict " << m.conflict;
+	ASSERT_LT(m.occupied, map.likelihoodOptions.occupiedMass);
+	const double share = m.occupied / (m.free + m.occupied + m.unknown);
+	ASSERT_GT(share, map.likelihoodOptions.occupiedMass);
+
+	CObservation2DRangeScan ray;
+	ray.resizeScan(1);
+	ray.setScanRange(0, 1.0f);
+	ray.setScanRangeValidity(0, true);
+	const Options& o = map.likelihoodOptions;
+	// Its occupied share wins: a ray ending there is a hit.
+	EXPECT_NEAR(
+		score(map, ray, CPose2D(4.025, 0.0, 0.0)), rayLogLikelihood(o, 0.0),
+		1e-6);
+	// Passed through again and again, the free evidence takes over: the
+	// nearest obstacle is the wall's cell [5.1, 5.15), two cells away.
+	for (int k = 0; k < 4; ++k)
+		ASSERT_TRUE(map.insertObservation(wallScan(5.12, 3.0 + k), CPose3D()));
+	EXPECT_NEAR(
+		score(map, ray, CPose2D(4.025, 0.0, 0.0)), rayLogLikelihood(o, 0.1),
+		1e-6);
+}
+
+TEST(Likelihood, InsertionInvalidatesTheCache)
+{
+	// Map only what the robot sees from the origin, looking along +x.
+	CEvidentialGridMap2D map;
+	const auto walls = room();
+	ASSERT_TRUE(
+		map.insertObservation(makeScan(walls, CPose2D(), 1.0), CPose3D()));
+	// A scan looking the other way mostly ends in cells not seen yet.
+	const CPose2D behind(-2.5, 0.5, deg(200));
+	const auto scan = makeScan(walls, behind, 2.0);
+	const double before = score(map, scan, behind);
+	EXPECT_EQ(before, score(map, scan, behind));  // cached, same answer
+	ASSERT_TRUE(map.insertObservation(scan, CPose3D(behind)));
+	const double after = score(map, scan, behind);
+	EXPECT_NE(before, after);
+	EXPECT_GT(after, before) << "the scan's own walls are now in the map";
+	// clear() drops the field too: back to a map that has seen nothing.
+	map.clear();
+	const auto& o = map.likelihoodOptions;
+	std::size_t scored = 0;
+	for (std::size_t i = 0; i < scan.getScanSize(); i += o.decimation)
+		if (scan.getScanRangeValidity(i)) ++scored;
+	EXPECT_NEAR(
+		score(map, scan, behind),
+		scored * rayLogLikelihood(o, 0.5 * o.maxCorrsDistance), 1e-9);
+}
+
+TEST(Likelihood, ConcurrentFirstUseGivesIdenticalResults)
+{
+	const auto walls = room();
+	const CPose2D pose(0.5, -1.0, deg(30));
+	const auto scan = makeScan(walls, pose, 100.0);
+	for (int round = 0; round < 5; ++round)
+	{
+		CEvidentialGridMap2D map;
+		buildRoomMap(map);  // the field is not built yet
+		constexpr int kThreads = 4;
+		std::vector<double> results(kThreads * 3);
+		std::atomic<int> ready{0};
+		std::vector<std::thread> threads;
+		for (int t = 0; t < kThreads; ++t)
+			threads.emplace_back([&, t] {
+				// Everyone starts together, so the first calls race.
+				++ready;
+				while (ready.load() < kThreads) std::this_thread::yield();
+				results[t * 3] = score(map, scan, pose);
+				results[t * 3 + 1] = score(map, scan, perturbations(pose)[0].second);
+				results[t * 3 + 2] = score(map, scan, pose);
+			});
+		for (auto& th : threads) th.join();
+		const double serial = score(map, scan, pose);
+		const double serialMoved = score(map, scan, perturbations(pose)[0].second);
+		for (int t = 0; t < kThreads; ++t)
+		{
+			EXPECT_EQ(results[t * 3], serial) << "thread " << t;
+			EXPECT_EQ(results[t * 3 + 1], serialMoved) << "thread " << t;
+			EXPECT_EQ(results[t * 3 + 2], serial) << "thread " << t;
+		}
+	}
+}
+
+// ---------------------------------------------------------------------------
+// Real data: MRPT's Malaga CS faculty simple map (99 SICK scans, SLAM poses)
+// ---------------------------------------------------------------------------
+
+TEST(LikelihoodRealData, MalagaScansScoreBestAtTheirPoses)
+{
+	mrpt::maps::CSimpleMap simpleMap;
+	const std::string file =
+		std::string(MRPT_DATASETS_DIR) + "/malaga-cs-fac-building.simplemap.gz";
+	ASSERT_TRUE(simpleMap.loadFromFile(file)) << file;
+	ASSERT_GT(simpleMap.size(), 50u);
+
+	CEvidentialGridMap2D map(-10, 10, -10, 10, 0.05);
+	map.loadFromProbabilisticPosesAndObservations(simpleMap);
+	ASSERT_GT(map.insertionCount(), 0u);
+	const auto counts = map.countDecisions();
+	ASSERT_GT(counts.occupied, 1000u) << map.asString();
+	std::cout << map.asString() << "\n";
+
+	std::size_t checked = 0;
+	for (std::size_t k = 0; k < simpleMap.size(); k += 10)
+	{
+		const auto& [posePdf, frame] = simpleMap.get(k);
+		const auto scan =
+			frame->getObservationByClass<CObservation2DRangeScan>();
+		if (!scan) continue;
+		const CPose2D pose(posePdf->getMeanVal());
+		const double own = score(map, *scan, pose);
+		std::cout << "scan " << k << " at " << pose.asString()
+				  << ": own pose " << own;
+		for (const auto& [name, moved] : perturbations(pose))
+		{
+			const double other = score(map, *scan, moved);
+			std::cout << ", " << name << " " << other;
+			EXPECT_GT(own, other) << "scan " << k << " moved " << name;
+		}
+		std::cout << "\n";
+		++checked;
+	}
+	EXPECT_GE(checked, 8u);
+}
+
+}  // namespace

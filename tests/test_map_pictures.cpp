@@ -1,0 +1,434 @@
+/* Pictures, conversions and files of CEvidentialGridMap2D: colours of cells
+ * of known masses, occupancy-grid and ROS map conversions, the saved
+ * representation and its atomic writing, the 3-D visualization. */
+
+#include <gtest/gtest.h>
+#include <mrpt/img/CImage.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/opengl/CSetOfObjects.h>
+#include <mrpt/opengl/CTexturedPlane.h>
+#include <mrpt/poses/CPose3D.h>
+#include <mrpt_evidential/CEvidentialGridMap2D.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "test_helpers.h"
+
+using namespace mrpt_evidential;
+namespace fs = std::filesystem;
+
+namespace
+{
+/** A 180-degree scan of 181 rays at data time t, every range = r. */
+mrpt::obs::CObservation2DRangeScan wallScan(double t, double r)
+{
+	mrpt::obs::CObservation2DRangeScan scan;
+	scan.aperture = static_cast<float>(M_PI);
+	scan.maxRange = 10.0f;
+	scan.resizeScan(181);
+	for (std::size_t i = 0; i < 181; ++i)
+	{
+		scan.setScanRange(i, static_cast<float>(r));
+		scan.setScanRangeValidity(i, true);
+	}
+	scan.timestamp = mrpt::Clock::fromDouble(t);
+	return scan;
+}
+
+/** A map that saw a wall 2 m ahead: free, occupied and unknown cells. */
+CEvidentialGridMap2D scannedMap()
+{
+	CEvidentialGridMap2D map(-3.0, 3.0, -3.0, 3.0, 0.1);
+	map.insertionOptions.growthMargin = 0.0;
+	map.insertObservation(wallScan(10.0, 2.0), mrpt::poses::CPose3D());
+	return map;
+}
+
+/** A map where the wall moved from 2 m to 3 m: the cells at 2 m were seen
+ * occupied, then free, and keep the conflict (conjunctive rule, Keep). */
+CEvidentialGridMap2D conflictingMap()
+{
+	CEvidentialGridMap2D map(-4.0, 4.0, -4.0, 4.0, 0.1);
+	map.insertionOptions.growthMargin = 0.0;
+	map.insertObservation(wallScan(10.0, 2.0), mrpt::poses::CPose3D());
+	map.insertObservation(wallScan(11.0, 3.0), mrpt::poses::CPose3D());
+	return map;
+}
+
+std::uint8_t toByte(double v)
+{
+	return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+}
+
+/** Channel indices of red, green and blue in a CImage colour pixel, found
+ * through CImage's documented setPixel(0x00RRGGBB). */
+struct ChannelOrder
+{
+	unsigned r, g, b;
+};
+ChannelOrder channelOrder()
+{
+	mrpt::img::CImage probe(1, 1, mrpt::img::CH_RGB);
+	probe.setPixel(0, 0, 0x00010203);  // R = 1, G = 2, B = 3
+	ChannelOrder o{};
+	for (unsigned ch = 0; ch < 3; ++ch)
+	{
+		const auto v = probe.at<std::uint8_t>(0, 0, ch);
+		(v == 1 ? o.r : v == 2 ? o.g : o.b) = ch;
+	}
+	return o;
+}
+
+/** The image row of cell row cy: row 0 holds the largest y. */
+unsigned rowOf(const CEvidentialGridMap2D& map, int cy)
+{
+	return static_cast<unsigned>(map.getSizeY() - 1 - cy);
+}
+
+fs::path scratchDir(const std::string& name)
+{
+	const fs::path dir = fs::path(TEST_SCRATCH_DIR) / "map_pictures" / name;
+	fs::remove_all(dir);
+	fs::create_directories(dir);
+	return dir;
+}
+
+std::set<std::string> filesIn(const fs::path& dir)
+{
+	std::set<std::string> names;
+	for (const auto& e : fs::directory_iterator(dir))
+		names.insert(e.path().filename().string());
+	return names;
+}
+
+std::string readText(const fs::path& path)
+{
+	std::ifstream f(path, std::ios::binary);
+	return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+}
+}  // namespace
+
+TEST(MapPictures, EvidentialColoursFollowTheMasses)
+{
+	const CEvidentialGridMap2D map = scannedMap();
+	mrpt::img::CImage img;
+	map.getAsEvidentialImage(img);
+	ASSERT_TRUE(img.isColor());
+	ASSERT_EQ(img.getWidth(), static_cast<std::size_t>(map.getSizeX()));
+	ASSERT_EQ(img.getHeight(), static_cast<std::size_t>(map.getSizeY()));
+
+	const ChannelOrder ch = channelOrder();
+	std::size_t free = 0, occupied = 0, unknown = 0;
+	for (int cy = 0; cy < map.getSizeY(); ++cy)
+		for (int cx = 0; cx < map.getSizeX(); ++cx)
+		{
+			const Mass m = map.getCellMassesByIndex(cx, cy);
+			const unsigned x = static_cast<unsigned>(cx), y = rowOf(map, cy);
+			ASSERT_EQ(img.at<std::uint8_t>(x, y, ch.r), toByte(m.occupied + m.conflict))
+				<< cx << ", " << cy;
+			ASSERT_EQ(img.at<std::uint8_t>(x, y, ch.g), toByte(m.free + m.conflict))
+				<< cx << ", " << cy;
+			ASSERT_EQ(img.at<std::uint8_t>(x, y, ch.b), toByte(m.unknown + m.conflict))
+				<< cx << ", " << cy;
+			free += decide(m) == Decision::Free;
+			occupied += decide(m) == Decision::Occupied;
+			unknown += decide(m) == Decision::Unknown;
+		}
+	// The picture shows all three kinds of cells, so the loop above tested
+	// each colour.
+	EXPECT_GT(free, 0u);
+	EXPECT_GT(occupied, 0u);
+	EXPECT_GT(unknown, 0u);
+
+	// Known places: the wall 2 m ahead is red, the space before it green,
+	// behind the robot blue (unseen).
+	const auto pixel = [&](double x, double y) {
+		const auto& g = map.geometry();
+		const unsigned px = static_cast<unsigned>(g.cellX(x));
+		const unsigned py = rowOf(map, g.cellY(y));
+		return std::array<int, 3>{
+			img.at<std::uint8_t>(px, py, ch.r), img.at<std::uint8_t>(px, py, ch.g),
+			img.at<std::uint8_t>(px, py, ch.b)};
+	};
+	const auto wall = pixel(2.02, 0.03), before = pixel(1.0, 0.03),
+			   behind = pixel(-1.5, 0.03);
+	EXPECT_GT(wall[0], wall[1]);
+	EXPECT_GT(before[1], before[0]);
+	EXPECT_EQ(behind, (std::array<int, 3>{0, 0, 255}));
+	// Without conflict the channels share 255 (up to rounding).
+	EXPECT_NEAR(wall[0] + wall[1] + wall[2], 255, 2);
+	EXPECT_NEAR(before[0] + before[1] + before[2], 255, 2);
+}
+
+TEST(MapPictures, EmptyMapPictures)
+{
+	const CEvidentialGridMap2D map(0.0, 1.0, 0.0, 0.5, 0.1);
+	mrpt::img::CImage evidential, bet, conflict;
+	map.getAsEvidentialImage(evidential);
+	map.getAsBetPImage(bet);
+	map.getAsConflictImage(conflict);
+	const ChannelOrder ch = channelOrder();
+	ASSERT_EQ(evidential.getWidth(), 10u);
+	ASSERT_EQ(evidential.getHeight(), 5u);
+	for (unsigned y = 0; y < 5; ++y)
+		for (unsigned x = 0; x < 10; ++x)
+		{
+			EXPECT_EQ(evidential.at<std::uint8_t>(x, y, ch.r), 0);
+			EXPECT_EQ(evidential.at<std::uint8_t>(x, y, ch.g), 0);
+			EXPECT_EQ(evidential.at<std::uint8_t>(x, y, ch.b), 255);
+			EXPECT_EQ(bet.at<std::uint8_t>(x, y), toByte(0.5));
+			EXPECT_EQ(conflict.at<std::uint8_t>(x, y), 0);
+		}
+}
+
+TEST(MapPictures, BetPAndConflictGreyLevels)
+{
+	const CEvidentialGridMap2D map = conflictingMap();
+	mrpt::img::CImage bet, conflict, evidential;
+	map.getAsBetPImage(bet);
+	map.getAsConflictImage(conflict);
+	map.getAsEvidentialImage(evidential);
+	ASSERT_FALSE(bet.isColor());
+	ASSERT_FALSE(conflict.isColor());
+	ASSERT_EQ(bet.getWidth(), static_cast<std::size_t>(map.getSizeX()));
+	ASSERT_EQ(conflict.getHeight(), static_cast<std::size_t>(map.getSizeY()));
+
+	double maxConflict = 0.0;
+	int maxX = 0, maxY = 0;
+	for (int cy = 0; cy < map.getSizeY(); ++cy)
+		for (int cx = 0; cx < map.getSizeX(); ++cx)
+		{
+			const Mass m = map.getCellMassesByIndex(cx, cy);
+			const unsigned x = static_cast<unsigned>(cx), y = rowOf(map, cy);
+			ASSERT_EQ(bet.at<std::uint8_t>(x, y), toByte(1.0 - betP(m)));
+			ASSERT_EQ(conflict.at<std::uint8_t>(x, y), toByte(m.conflict));
+			if (m.conflict > maxConflict) maxConflict = m.conflict, maxX = cx, maxY = cy;
+		}
+
+	// The old wall is mostly conflict: white in the conflict picture and
+	// brightened towards white in the evidential one.
+	ASSERT_GT(maxConflict, 0.5);
+	const unsigned x = static_cast<unsigned>(maxX), y = rowOf(map, maxY);
+	EXPECT_GE(conflict.at<std::uint8_t>(x, y), 128);
+	for (unsigned c = 0; c < 3; ++c)
+		EXPECT_GE(evidential.at<std::uint8_t>(x, y, c), toByte(maxConflict));
+	// The free space near the robot is white (BetP near 0), the new wall dark.
+	const auto& g = map.geometry();
+	EXPECT_GT(bet.at<std::uint8_t>(
+				  static_cast<unsigned>(g.cellX(1.0)), rowOf(map, g.cellY(0.03))),
+			  200);
+	EXPECT_LT(bet.at<std::uint8_t>(
+				  static_cast<unsigned>(g.cellX(3.02)), rowOf(map, g.cellY(0.03))),
+			  80);
+}
+
+TEST(MapPictures, OccupiedCellCenters)
+{
+	const CEvidentialGridMap2D map = conflictingMap();
+	const auto centers = map.getOccupiedCellCenters();
+	EXPECT_EQ(centers.size(), map.countDecisions().occupied);
+	ASSERT_FALSE(centers.empty());
+	const auto& g = map.geometry();
+	for (const auto& [x, y] : centers)
+	{
+		EXPECT_EQ(map.getCellDecision(x, y), Decision::Occupied);
+		EXPECT_NEAR(x, g.cellCenterX(g.cellX(x)), 1e-9);
+		EXPECT_NEAR(y, g.cellCenterY(g.cellY(y)), 1e-9);
+	}
+	EXPECT_TRUE(CEvidentialGridMap2D().getOccupiedCellCenters().empty());
+}
+
+TEST(MapPictures, OccupancyGridHoldsBetP)
+{
+	const CEvidentialGridMap2D map = conflictingMap();
+	mrpt::maps::COccupancyGridMap2D grid;
+	map.getAsOccupancyGrid(grid);
+	ASSERT_EQ(grid.getSizeX(), static_cast<unsigned>(map.getSizeX()));
+	ASSERT_EQ(grid.getSizeY(), static_cast<unsigned>(map.getSizeY()));
+	EXPECT_NEAR(grid.getXMin(), map.getXMin(), 1e-5);
+	EXPECT_NEAR(grid.getYMax(), map.getYMax(), 1e-5);
+	EXPECT_NEAR(grid.getResolution(), map.getResolution(), 1e-6);
+	// The grid stores log-odds in 8 bits: about 1/64 of error near 0.5.
+	for (int cy = 0; cy < map.getSizeY(); ++cy)
+		for (int cx = 0; cx < map.getSizeX(); ++cx)
+			ASSERT_NEAR(
+				1.0 - grid.getCell(cx, cy), betP(map.getCellMassesByIndex(cx, cy)),
+				0.02)
+				<< cx << ", " << cy;
+}
+
+TEST(MapPictures, OccupancyGridWithAnUnalignedOrigin)
+{
+	// COccupancyGridMap2D snaps its bounds to multiples of the resolution:
+	// each of its cells holds the BetP of the cell under its centre.
+	CEvidentialGridMap2D map(-2.03, 2.97, -1.96, 3.04, 0.1);
+	map.insertionOptions.growthMargin = 0.0;
+	map.insertObservation(wallScan(1.0, 1.5), mrpt::poses::CPose3D(0.2, 0.4, 0, 0.3, 0, 0));
+	mrpt::maps::COccupancyGridMap2D grid;
+	map.getAsOccupancyGrid(grid);
+	for (unsigned cy = 0; cy < grid.getSizeY(); ++cy)
+		for (unsigned cx = 0; cx < grid.getSizeX(); ++cx)
+			ASSERT_NEAR(
+				1.0 - grid.getCell(static_cast<int>(cx), static_cast<int>(cy)),
+				map.getCellBetP(grid.idx2x(cx), grid.idx2y(cy)), 0.02);
+}
+
+TEST(MapPictures, RosMapFiles)
+{
+	const fs::path dir = scratchDir("ros");
+	const CEvidentialGridMap2D map = scannedMap();
+	map.saveAsROSMap((dir / "office").string());
+	EXPECT_EQ(filesIn(dir), (std::set<std::string>{"office.pgm", "office.yaml"}));
+
+	std::ifstream pgm(dir / "office.pgm", std::ios::binary);
+	std::string magic, comment;
+	pgm >> magic;
+	ASSERT_EQ(magic, "P5");
+	pgm >> std::ws;
+	if (pgm.peek() == '#') std::getline(pgm, comment);
+	int w = 0, h = 0, maxval = 0;
+	pgm >> w >> h >> maxval;
+	pgm.get();  // the single white space before the pixels
+	ASSERT_EQ(w, map.getSizeX());
+	ASSERT_EQ(h, map.getSizeY());
+	ASSERT_EQ(maxval, 255);
+	const std::string pixels{
+		std::istreambuf_iterator<char>(pgm), std::istreambuf_iterator<char>()};
+	ASSERT_EQ(pixels.size(), static_cast<std::size_t>(w) * h);
+	std::set<int> seen;
+	for (int row = 0; row < h; ++row)
+		for (int cx = 0; cx < w; ++cx)
+		{
+			const int v = static_cast<unsigned char>(pixels[row * w + cx]);
+			const double p = betP(map.getCellMassesByIndex(cx, h - 1 - row));
+			const int expected = p > 0.65 ? 0 : p < 0.196 ? 254 : 205;
+			ASSERT_EQ(v, expected) << cx << ", " << row;
+			seen.insert(v);
+		}
+	EXPECT_EQ(seen, (std::set<int>{0, 205, 254}));
+
+	const std::string yaml = readText(dir / "office.yaml");
+	EXPECT_NE(yaml.find("image: office.pgm\n"), std::string::npos) << yaml;
+	EXPECT_NE(yaml.find("resolution: 0.1\n"), std::string::npos) << yaml;
+	EXPECT_NE(yaml.find("origin: [-3, -3, 0.0]\n"), std::string::npos) << yaml;
+	EXPECT_NE(yaml.find("negate: 0\n"), std::string::npos) << yaml;
+	EXPECT_NE(yaml.find("occupied_thresh: 0.65\n"), std::string::npos) << yaml;
+	EXPECT_NE(yaml.find("free_thresh: 0.196\n"), std::string::npos) << yaml;
+}
+
+TEST(MapPictures, SavedRepresentationWritesFiveFilesAndNoTemporary)
+{
+	const fs::path dir = scratchDir("representation");
+	const CEvidentialGridMap2D map = conflictingMap();
+	const std::string prefix = (dir / "run1").string();
+	map.saveMetricMapRepresentationToFile(prefix);
+	EXPECT_EQ(
+		filesIn(dir),
+		(std::set<std::string>{
+			"run1_evidential.png", "run1_betp.png", "run1_conflict.png",
+			"run1_info.txt", "run1.evgrid"}));
+
+	mrpt::img::CImage loaded, expected;
+	ASSERT_TRUE(loaded.loadFromFile(prefix + "_evidential.png"));
+	map.getAsEvidentialImage(expected);
+	ASSERT_EQ(loaded.getWidth(), expected.getWidth());
+	ASSERT_EQ(loaded.getHeight(), expected.getHeight());
+	// PNG is lossless and the file keeps the colours: every byte is equal.
+	for (unsigned y = 0; y < loaded.getHeight(); ++y)
+		for (unsigned x = 0; x < loaded.getWidth(); ++x)
+			for (unsigned c = 0; c < 3; ++c)
+				ASSERT_EQ(loaded.at<std::uint8_t>(x, y, c), expected.at<std::uint8_t>(x, y, c));
+	ASSERT_TRUE(loaded.loadFromFile(prefix + "_betp.png"));
+	EXPECT_EQ(loaded.getWidth(), static_cast<std::size_t>(map.getSizeX()));
+
+	const std::string info = readText(prefix + "_info.txt");
+	const auto counts = map.countDecisions();
+	EXPECT_NE(info.find("insertions: 2"), std::string::npos) << info;
+	EXPECT_NE(info.find("latest time: 11 s"), std::string::npos) << info;
+	EXPECT_NE(
+		info.find("occupied " + std::to_string(counts.occupied)), std::string::npos)
+		<< info;
+	EXPECT_NE(info.find("fusionRule"), std::string::npos) << info;
+	EXPECT_NE(info.find("sigma"), std::string::npos) << info;
+
+	// Writing again replaces the files, still without leftovers.
+	map.saveMetricMapRepresentationToFile(prefix);
+	EXPECT_EQ(filesIn(dir).size(), 5u);
+}
+
+TEST(MapPictures, FailedWritesThrowAndLeaveNothing)
+{
+	const fs::path dir = scratchDir("failures");
+	const CEvidentialGridMap2D map = scannedMap();
+	const fs::path missing = dir / "no_such_dir";
+	EXPECT_THROW(
+		map.saveMetricMapRepresentationToFile((missing / "x").string()),
+		std::runtime_error);
+	EXPECT_THROW(map.saveAsROSMap((missing / "x").string()), std::runtime_error);
+	EXPECT_FALSE(fs::exists(missing));
+
+	// A target that cannot be replaced (a directory in its place): the
+	// temporary file written next to it is removed.
+	fs::create_directory(dir / "y_info.txt");
+	try
+	{
+		map.saveMetricMapRepresentationToFile((dir / "y").string());
+		FAIL() << "replacing a directory succeeded";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("y_info.txt"), std::string::npos)
+			<< e.what();
+	}
+	// The pictures came first and are complete; nothing else is left.
+	EXPECT_EQ(
+		filesIn(dir),
+		(std::set<std::string>{
+			"y_evidential.png", "y_betp.png", "y_conflict.png", "y_info.txt"}));
+	EXPECT_TRUE(fs::is_directory(dir / "y_info.txt"));
+}
+
+TEST(MapPictures, VisualizationIsOneTexturedPlane)
+{
+	CEvidentialGridMap2D map = scannedMap();
+	mrpt::opengl::CSetOfObjects scene;
+	map.getVisualizationInto(scene);
+	ASSERT_EQ(scene.size(), 1u);
+	const auto plane = scene.getByClass<mrpt::opengl::CTexturedPlane>();
+	ASSERT_TRUE(plane);
+	float xMin, xMax, yMin, yMax;
+	plane->getPlaneCorners(xMin, xMax, yMin, yMax);
+	EXPECT_NEAR(xMin, map.getXMin(), 1e-5);
+	EXPECT_NEAR(xMax, map.getXMax(), 1e-5);
+	EXPECT_NEAR(yMin, map.getYMin(), 1e-5);
+	EXPECT_NEAR(yMax, map.getYMax(), 1e-5);
+
+	// The plane maps texture row 0 to yMin: the texture is the picture
+	// upside down.
+	mrpt::img::CImage picture;
+	map.getAsEvidentialImage(picture);
+	const mrpt::img::CImage& texture = plane->getTextureImage();
+	ASSERT_EQ(texture.getWidth(), picture.getWidth());
+	ASSERT_EQ(texture.getHeight(), picture.getHeight());
+	const unsigned h = static_cast<unsigned>(picture.getHeight());
+	for (unsigned y = 0; y < h; ++y)
+		for (unsigned x = 0; x < picture.getWidth(); ++x)
+			for (unsigned c = 0; c < 3; ++c)
+				ASSERT_EQ(
+					texture.at<std::uint8_t>(x, y, c),
+					picture.at<std::uint8_t>(x, h - 1 - y, c));
+
+	map.genericMapParams.enableSaveAs3DObject = false;
+	mrpt::opengl::CSetOfObjects none;
+	map.getVisualizationInto(none);
+	EXPECT_EQ(none.size(), 0u);
+}
