@@ -121,7 +121,8 @@ TEST(LikelihoodOptions, InvalidValuesThrowNamingKeyAndValue)
 	Options o;
 	try
 	{
-		o.loadFromConfigFile(iniWith("zHit = 0\nzRandom = 0\n"), "likelihoodOpts");
+		o.loadFromConfigFile(
+			iniWith("zHit = 0\nzRandom = 0\n"), "likelihoodOpts");
 		ADD_FAILURE() << "zHit = zRandom = 0 was accepted";
 	}
 	catch (const std::invalid_argument& e)
@@ -140,7 +141,8 @@ TEST(LikelihoodOptions, InvalidValuesThrowNamingKeyAndValue)
 	}
 	catch (const std::invalid_argument& e)
 	{
-		EXPECT_STREQ(e.what(), "likelihoodOpts: sigma must be > 0 and finite, got -1");
+		EXPECT_STREQ(
+			e.what(), "likelihoodOpts: sigma must be > 0 and finite, got -1");
 	}
 }
 
@@ -536,6 +538,7 @@ TEST(Likelihood, ConcurrentFirstUseGivesIdenticalResults)
 	const auto walls = room();
 	const CPose2D pose(0.5, -1.0, deg(30));
 	const auto scan = makeScan(walls, pose, 100.0);
+	const CPose2D moved = perturbations(pose)[0].second;
 	for (int round = 0; round < 5; ++round)
 	{
 		CEvidentialGridMap2D map;
@@ -550,12 +553,12 @@ TEST(Likelihood, ConcurrentFirstUseGivesIdenticalResults)
 				++ready;
 				while (ready.load() < kThreads) std::this_thread::yield();
 				results[t * 3] = score(map, scan, pose);
-				results[t * 3 + 1] = score(map, scan, perturbations(pose)[0].second);
+				results[t * 3 + 1] = score(map, scan, moved);
 				results[t * 3 + 2] = score(map, scan, pose);
 			});
 		for (auto& th : threads) th.join();
 		const double serial = score(map, scan, pose);
-		const double serialMoved = score(map, scan, perturbations(pose)[0].second);
+		const double serialMoved = score(map, scan, moved);
 		for (int t = 0; t < kThreads; ++t)
 		{
 			EXPECT_EQ(results[t * 3], serial) << "thread " << t;

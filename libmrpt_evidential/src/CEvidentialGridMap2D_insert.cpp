@@ -225,6 +225,17 @@ bool CEvidentialGridMap2D::insertScan(
 			// A cell the scan says nothing about is left alone: fusing the
 			// vacuous mass would still renormalize it under some rules.
 			if (observed.unknown >= 1.0 - 1e-12) continue;
+			// A cell touched by an impact's bin holds (part of) what the beam
+			// hit, so the beam does not prove it free: its share of free
+			// evidence from the bin before the impact becomes ignorance.
+			// Without this, walls collect free and occupied evidence from
+			// scan to scan and end up as conflict.
+			if (rowLo[nb.lo].occupied > 0.0 || rowLo[nb.hi].occupied > 0.0 ||
+				rowHi[nb.lo].occupied > 0.0 || rowHi[nb.hi].occupied > 0.0)
+			{
+				observed.unknown += observed.free;
+				observed.free = 0.0;
+			}
 
 			const std::size_t idx = g.index(cx, cy);
 			m_grid.write(

@@ -18,7 +18,10 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "ConfigReading.h"
 
 namespace mrpt_evidential
 {
@@ -151,67 +154,6 @@ std::string formatValue(double v)
 		"likelihoodOpts: " + key + " must be " + rule + ", got " + got);
 }
 
-/** The text of a key, or false if absent. */
-bool readText(
-	const mrpt::config::CConfigFileBase& source, const std::string& section,
-	const std::string& key, std::string& text)
-{
-	if (!source.keyExists(section, key)) return false;
-	text = source.read_string(section, key, "");
-	return true;
-}
-
-/** A number that must fill the whole text: stock read_double would take
- * "abc" as 0 and "1x" as 1 without a word. */
-void readDouble(
-	const mrpt::config::CConfigFileBase& source, const std::string& section,
-	const std::string& key, double& value)
-{
-	std::string text;
-	if (!readText(source, section, key, text)) return;
-	const char* begin = text.c_str();
-	char* end = nullptr;
-	const double v = std::strtod(begin, &end);
-	if (text.empty() || end != begin + text.size())
-		throwInvalid(key, "a number", "'" + text + "'");
-	value = v;
-}
-
-void readDecimation(
-	const mrpt::config::CConfigFileBase& source, const std::string& section,
-	unsigned int& value)
-{
-	std::string text;
-	if (!readText(source, section, "decimation", text)) return;
-	const char* begin = text.c_str();
-	char* end = nullptr;
-	const long long v = std::strtoll(begin, &end, 10);
-	if (text.empty() || end != begin + text.size())
-		throwInvalid("decimation", "an integer", "'" + text + "'");
-	// Checked here: the field is unsigned, so validate() cannot see a
-	// negative value.
-	if (v < 1 || v > std::numeric_limits<unsigned int>::max())
-		throwInvalid("decimation", "an integer >= 1", text);
-	value = static_cast<unsigned int>(v);
-}
-
-void readBool(
-	const mrpt::config::CConfigFileBase& source, const std::string& section,
-	const std::string& key, bool& value)
-{
-	std::string text;
-	if (!readText(source, section, key, text)) return;
-	std::string t = text;
-	for (char& c : t)
-		c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-	if (t == "true" || t == "yes" || t == "1")
-		value = true;
-	else if (t == "false" || t == "no" || t == "0")
-		value = false;
-	else
-		throwInvalid(key, "true or false", "'" + text + "'");
-}
-
 }  // namespace
 
 void CEvidentialGridMap2D::TLikelihoodOptions::loadFromConfigFile(
@@ -219,14 +161,14 @@ void CEvidentialGridMap2D::TLikelihoodOptions::loadFromConfigFile(
 {
 	// All or nothing: *this changes only when every value is valid.
 	TLikelihoodOptions o = *this;
-	readDouble(source, section, "occupiedMass", o.occupiedMass);
-	readDouble(source, section, "maxCorrsDistance", o.maxCorrsDistance);
-	readDouble(source, section, "sigma", o.sigma);
-	readDouble(source, section, "zHit", o.zHit);
-	readDouble(source, section, "zRandom", o.zRandom);
-	readDouble(source, section, "maxRange", o.maxRange);
-	readDecimation(source, section, o.decimation);
-	readBool(source, section, "unknownAsNeutral", o.unknownAsNeutral);
+	detail::readDouble(source, section, "occupiedMass", o.occupiedMass);
+	detail::readDouble(source, section, "maxCorrsDistance", o.maxCorrsDistance);
+	detail::readDouble(source, section, "sigma", o.sigma);
+	detail::readDouble(source, section, "zHit", o.zHit);
+	detail::readDouble(source, section, "zRandom", o.zRandom);
+	detail::readDouble(source, section, "maxRange", o.maxRange);
+	detail::readCount(source, section, "decimation", o.decimation);
+	detail::readBool(source, section, "unknownAsNeutral", o.unknownAsNeutral);
 	o.validate();
 	*this = o;
 }
@@ -254,35 +196,33 @@ void CEvidentialGridMap2D::TLikelihoodOptions::validate() const
 		throwInvalid("decimation", "an integer >= 1", formatValue(decimation));
 }
 
-/* As .ini lines with the unit in a "//" comment, which MRPT's readers
- * strip: a dump can be pasted into a likelihoodOpts section. */
+void CEvidentialGridMap2D::TLikelihoodOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& target, const std::string& section) const
+{
+	using detail::writeValue;
+	writeValue(target, section, "occupiedMass", occupiedMass,
+			   "(0, 1]: obstacles have m(O) / (1 - m(empty)) >= this");
+	writeValue(target, section, "maxCorrsDistance", maxCorrsDistance, "m");
+	writeValue(target, section, "sigma", sigma, "m");
+	writeValue(target, section, "zHit", zHit, "weight, >= 0");
+	writeValue(target, section, "zRandom", zRandom, "weight, >= 0");
+	writeValue(target, section, "maxRange", maxRange, "m");
+	writeValue(target, section, "decimation", static_cast<double>(decimation),
+			   "rays: one scored in this many");
+	writeValue(target, section, "unknownAsNeutral", unknownAsNeutral,
+			   "a ray ending in a never-seen cell scores as neither hit nor miss");
+}
+
 void CEvidentialGridMap2D::TLikelihoodOptions::dumpToTextStream(
 	std::ostream& out) const
 {
-	// Formatted apart so that the caller's stream keeps its flags.
-	std::ostringstream s;
-	const auto line = [&s](const char* key, const auto& value,
-						   const char* unit) {
-		s << std::left << std::setw(17) << key << "= " << std::setw(8)
-			<< value << " // " << unit << "\n";
-	};
-	s << "// likelihoodOpts of CEvidentialGridMap2D\n";
-	line("occupiedMass", occupiedMass,
-		 "mass in (0, 1]: obstacles have m(O) >= this");
-	line("maxCorrsDistance", maxCorrsDistance, "m");
-	line("sigma", sigma, "m");
-	line("zHit", zHit, "weight, >= 0");
-	line("zRandom", zRandom, "weight, >= 0");
-	line("maxRange", maxRange, "m");
-	line("decimation", decimation, "rays: one scored in this many");
-	line("unknownAsNeutral", unknownAsNeutral ? "true" : "false", "bool");
-	out << s.str();
+	detail::dumpAsIni(*this, "likelihoodOpts", out);
 }
 
 void CEvidentialGridMap2D::invalidateLikelihoodCache()
 {
-	std::lock_guard<std::mutex> lock(m_likelihoodMutex);
-	m_likelihoodField.reset();
+	std::lock_guard<std::mutex> lock(m_likelihoodCache.mutex);
+	m_likelihoodCache.value.reset();
 }
 
 std::shared_ptr<const CEvidentialGridMap2D::LikelihoodField>
@@ -290,12 +230,12 @@ std::shared_ptr<const CEvidentialGridMap2D::LikelihoodField>
 {
 	// The lock is held while building: threads that ask at the same time wait
 	// for the one build instead of each making its own.
-	std::lock_guard<std::mutex> lock(m_likelihoodMutex);
+	std::lock_guard<std::mutex> lock(m_likelihoodCache.mutex);
 	const TLikelihoodOptions& opts = likelihoodOptions;
-	if (m_likelihoodField &&
-		m_likelihoodField->occupiedMass == opts.occupiedMass &&
-		m_likelihoodField->maxCorrsDistance == opts.maxCorrsDistance)
-		return m_likelihoodField;
+	if (m_likelihoodCache.value &&
+		m_likelihoodCache.value->occupiedMass == opts.occupiedMass &&
+		m_likelihoodCache.value->maxCorrsDistance == opts.maxCorrsDistance)
+		return m_likelihoodCache.value;
 	opts.validate();
 
 	const GridGeometry& map = m_grid.geometry();
@@ -378,8 +318,8 @@ std::shared_ptr<const CEvidentialGridMap2D::LikelihoodField>
 		}
 	}
 
-	m_likelihoodField = field;
-	return m_likelihoodField;
+	m_likelihoodCache.value = field;
+	return m_likelihoodCache.value;
 }
 
 /* Only CObservation2DRangeScan is scored: any other observation gives 0 (a
@@ -428,7 +368,8 @@ double CEvidentialGridMap2D::internal_computeObservationLikelihood(
 		if (d >= static_cast<double>(field->cutDistance))
 			d = unseen && opts.unknownAsNeutral ? neutralDistance
 												: opts.maxCorrsDistance;
-		logLikelihood += logAddExp(logRandom, logHit - d * d * inverseTwoVariance);
+		logLikelihood +=
+			logAddExp(logRandom, logHit - d * d * inverseTwoVariance);
 	}
 	return logLikelihood;
 }

@@ -28,13 +28,30 @@ namespace mrpt_evidential
 {
 namespace detail
 {
-/** A mutex that copies of its owner do not share: a copied map gets a fresh
- * one, so that maps stay copyable as MRPT maps are. */
-struct CopyableMutex : std::mutex
+/** A value guarded by its own mutex. Copying locks the source and gives the
+ * copy a fresh mutex, so that the owner stays copyable (as MRPT maps are) and
+ * may be copied while other threads read it. */
+template <typename T>
+struct Guarded
 {
-	CopyableMutex() = default;
-	CopyableMutex(const CopyableMutex&) : std::mutex() {}
-	CopyableMutex& operator=(const CopyableMutex&) { return *this; }
+	mutable std::mutex mutex;
+	T value{};
+
+	Guarded() = default;
+	Guarded(const Guarded& o)
+	{
+		std::lock_guard<std::mutex> lock(o.mutex);
+		value = o.value;
+	}
+	Guarded& operator=(const Guarded& o)
+	{
+		if (this != &o)
+		{
+			std::scoped_lock lock(mutex, o.mutex);
+			value = o.value;
+		}
+		return *this;
+	}
 };
 }  // namespace detail
 
@@ -269,7 +286,13 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	TInsertionOptions insertionOptions;
 
 	/** Likelihood options, `[<prefix>_evidentialGrid_NN_likelihoodOpts]`: a
-	 * likelihood field (Thrun) computed from the cells' occupied evidence. */
+	 * likelihood field (Thrun) computed from the cells' occupied evidence.
+	 * computeObservationLikelihood() of a CObservation2DRangeScan is the sum,
+	 * over its scored rays, of log(zRandom / maxRange + zHit exp(-d^2 /
+	 * (2 sigma^2))), d the distance from the ray's end to the nearest
+	 * obstacle cell, cut at maxCorrsDistance (0 for a scan without a scored
+	 * ray). Other observations give 0, and canComputeObservationLikelihood()
+	 * is false for them. */
 	struct TLikelihoodOptions : public mrpt::config::CLoadableOptions
 	{
 		/** `occupiedMass`: a cell is an obstacle of the field when its
@@ -297,9 +320,21 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 		 * as a miss, as if the cell were free. */
 		bool unknownAsNeutral = true;
 
+		/** Reads the keys above from `section`; absent keys keep their value.
+		 * A number must be the whole first word of the value ("0.3x" is
+		 * refused; a trailing comment is fine), a boolean true, false, yes,
+		 * no, 1 or 0. Nothing changes unless every value is valid.
+		 * \throws std::invalid_argument naming the key and value of the first
+		 *  invalid one. */
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& source,
 			const std::string& section) override;
+		/** Writes every key with its unit as a comment; loadFromConfigFile()
+		 * reads them back exactly. */
+		void saveToConfigFile(
+			mrpt::config::CConfigFileBase& target,
+			const std::string& section) const override;
+		/** Prints the keys as saveToConfigFile() writes them. */
 		void dumpToTextStream(std::ostream& out) const override;
 		/** \throws std::invalid_argument naming the first invalid field. */
 		void validate() const;
@@ -345,10 +380,10 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 
 	/** The likelihood field: per cell, the distance to the nearest obstacle
 	 * (cut at maxCorrsDistance), and whether the cell was never seen. Built
-	 * on first use under m_likelihoodMutex, dropped on every change. */
+	 * on first use under the cache's lock, dropped on every change. */
 	struct LikelihoodField;
-	mutable detail::CopyableMutex m_likelihoodMutex;
-	mutable std::shared_ptr<const LikelihoodField> m_likelihoodField;
+	mutable detail::Guarded<std::shared_ptr<const LikelihoodField>>
+		m_likelihoodCache;
 	/** Builds the field for the current cells and options. */
 	std::shared_ptr<const LikelihoodField> likelihoodField() const;
 };
