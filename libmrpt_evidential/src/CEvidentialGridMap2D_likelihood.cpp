@@ -8,6 +8,7 @@
 #include <mrpt/poses/CPose3D.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -26,42 +27,49 @@
 namespace mrpt_evidential
 {
 /** Distances to the nearest obstacle over the map and a margin of cells
- * around it: the margin lets an end point just outside the map see the
+ * around it, one byte per cell, and the score of a ray ending in a cell of
+ * each byte value. The margin lets an end point just outside the map see the
  * obstacles inside it that are within maxCorrsDistance. */
 struct CEvidentialGridMap2D::LikelihoodField
 {
-	/** The options the field was built with: changing them (the fields are
-	 * public, nothing tells the map) makes the field stale. */
-	double occupiedMass = 0.0, maxCorrsDistance = 0.0;
+	/** Codes below kFarSeen: the distance to the nearest obstacle, below
+	 * maxCorrsDistance. When the squared cut, in cells, is below kFarSeen
+	 * (the usual case) the code is the exact squared distance in cells;
+	 * otherwise the distance in steps of maxCorrsDistance / kFarSeen.
+	 * kFarSeen: no obstacle within maxCorrsDistance; kFarUnseen: none, and
+	 * the cell was never seen (its largest mass is m(Omega)). Every margin
+	 * cell is never seen. */
+	static constexpr std::uint8_t kFarSeen = 254, kFarUnseen = 255;
+
+	/** The options the field and its scores were built with: the fields are
+	 * public and nothing tells the map of a change, so it is checked. */
+	TLikelihoodOptions options;
 	/** Geometry of the field: the map's, grown by the margin on every side. */
 	GridGeometry geometry;
-	/** maxCorrsDistance as stored in `distance`: a cell holding it has no
-	 * obstacle within maxCorrsDistance. */
-	float cutDistance = 0.0f;
-	/** Per cell, metres, in [0, cutDistance]. */
-	std::vector<float> distance;
-	/** Per cell, 1 when the cell was never seen (its largest mass is
-	 * m(Omega)); every margin cell is never seen. */
-	std::vector<std::uint8_t> neverSeen;
+	std::vector<std::uint8_t> code;
+	/** Log-likelihood of a ray ending in a cell of each code. */
+	std::array<double, 256> score{};
 
-	/** Distance and never-seen flag of the cell holding world point (x, y);
-	 * beyond the field, no obstacle is near and nothing was seen. */
-	void lookup(double x, double y, double& dist, bool& unseen) const
+	bool builtWith(const TLikelihoodOptions& o) const
 	{
-		const double fx = std::floor((x - geometry.xMin) / geometry.resolution);
-		const double fy = std::floor((y - geometry.yMin) / geometry.resolution);
+		return options.occupiedMass == o.occupiedMass &&
+			options.maxCorrsDistance == o.maxCorrsDistance &&
+			options.sigma == o.sigma && options.zHit == o.zHit &&
+			options.zRandom == o.zRandom && options.maxRange == o.maxRange &&
+			options.unknownAsNeutral == o.unknownAsNeutral;
+	}
+
+	/** Score of a ray ending at world point (x, y); beyond the field, no
+	 * obstacle is near and nothing was seen. */
+	double scoreAt(double x, double y) const
+	{
+		const double fx = (x - geometry.xMin) / geometry.resolution;
+		const double fy = (y - geometry.yMin) / geometry.resolution;
 		// Compared as doubles: a far point must not overflow an int.
 		if (!(fx >= 0.0 && fy >= 0.0 && fx < geometry.sizeX &&
 			  fy < geometry.sizeY))
-		{
-			dist = cutDistance;
-			unseen = true;
-			return;
-		}
-		const std::size_t i =
-			geometry.index(static_cast<int>(fx), static_cast<int>(fy));
-		dist = distance[i];
-		unseen = neverSeen[i] != 0;
+			return score[kFarUnseen];
+		return score[code[geometry.index(static_cast<int>(fx), static_cast<int>(fy))]];
 	}
 };
 
@@ -232,17 +240,37 @@ std::shared_ptr<const CEvidentialGridMap2D::LikelihoodField>
 	// for the one build instead of each making its own.
 	std::lock_guard<std::mutex> lock(m_likelihoodCache.mutex);
 	const TLikelihoodOptions& opts = likelihoodOptions;
-	if (m_likelihoodCache.value &&
-		m_likelihoodCache.value->occupiedMass == opts.occupiedMass &&
-		m_likelihoodCache.value->maxCorrsDistance == opts.maxCorrsDistance)
+	if (m_likelihoodCache.value && m_likelihoodCache.value->builtWith(opts))
 		return m_likelihoodCache.value;
 	opts.validate();
 
 	const GridGeometry& map = m_grid.geometry();
 	auto field = std::make_shared<LikelihoodField>();
-	field->occupiedMass = opts.occupiedMass;
-	field->maxCorrsDistance = opts.maxCorrsDistance;
-	field->cutDistance = static_cast<float>(opts.maxCorrsDistance);
+	field->options = opts;
+	using Field = LikelihoodField;
+	const double cutCells = opts.maxCorrsDistance / map.resolution;
+	const bool squaredCodes = cutCells * cutCells < Field::kFarSeen;
+	const double step = opts.maxCorrsDistance / Field::kFarSeen;
+	const auto distanceOf = [&](int c) {
+		return squaredCodes ? std::sqrt(static_cast<double>(c)) * map.resolution
+							: (c + 0.5) * step;
+	};
+
+	// Per ray: log(zRandom / maxRange + zHit exp(-d^2 / (2 sigma^2))), as the
+	// log-sum of its two terms (a zero weight is a term of log 0), so that a
+	// very small sigma still gives a finite score. Far from every obstacle d
+	// is the cut, or half of it in a never-seen cell: neither hit nor miss.
+	constexpr double kLogZero = -std::numeric_limits<double>::infinity();
+	const double logRandom =
+		opts.zRandom > 0.0 ? std::log(opts.zRandom / opts.maxRange) : kLogZero;
+	const double logHit = opts.zHit > 0.0 ? std::log(opts.zHit) : kLogZero;
+	const auto scoreOf = [&](double d) {
+		return logAddExp(logRandom, logHit - d * d / (2.0 * opts.sigma * opts.sigma));
+	};
+	for (int c = 0; c < Field::kFarSeen; ++c) field->score[c] = scoreOf(distanceOf(c));
+	field->score[Field::kFarSeen] = scoreOf(opts.maxCorrsDistance);
+	field->score[Field::kFarUnseen] = scoreOf(
+		opts.unknownAsNeutral ? 0.5 * opts.maxCorrsDistance : opts.maxCorrsDistance);
 
 	// Distances are exact up to the cut: the reach (in cells) is the cut
 	// rounded up, and farther sites never win below the cut.
@@ -261,8 +289,7 @@ std::shared_ptr<const CEvidentialGridMap2D::LikelihoodField>
 	const auto reach = static_cast<std::int32_t>(
 		std::min<double>(reachCells, g.sizeY));
 	const std::size_t cells = g.cellCount();
-	field->distance.assign(cells, field->cutDistance);
-	field->neverSeen.assign(cells, 1);
+	field->code.assign(cells, Field::kFarUnseen);
 
 	// Vertical distance to the nearest obstacle of the same column, in cells,
 	// saturated at reach + 1 ("none within reach"): a downward and an upward
@@ -283,8 +310,8 @@ std::shared_ptr<const CEvidentialGridMap2D::LikelihoodField>
 			{
 				const Mass m = m_grid.read(map.index(cx, cy));
 				obstacle = occupiedShare(m) >= opts.occupiedMass;
-				field->neverSeen[g.index(fx, fy)] =
-					decide(m) == Decision::Unknown ? 1 : 0;
+				if (decide(m) != Decision::Unknown)
+					field->code[g.index(fx, fy)] = Field::kFarSeen;
 			}
 			if (obstacle)
 				row[fx] = 0;
@@ -314,7 +341,8 @@ std::shared_ptr<const CEvidentialGridMap2D::LikelihoodField>
 		{
 			const double d = std::sqrt(squared[fx]) * g.resolution;
 			if (d < opts.maxCorrsDistance)
-				field->distance[first + fx] = static_cast<float>(d);
+				field->code[first + fx] = static_cast<std::uint8_t>(std::min<double>(
+					squaredCodes ? squared[fx] : d / step, Field::kFarSeen - 1));
 		}
 	}
 
@@ -337,39 +365,33 @@ double CEvidentialGridMap2D::internal_computeObservationLikelihood(
 	const std::shared_ptr<const LikelihoodField> field = likelihoodField();
 
 	const mrpt::poses::CPose3D sensorPose = takenFrom + scan->sensorPose;
-	// Per ray: log(zRandom / maxRange + zHit exp(-d^2 / (2 sigma^2))), as
-	// the log-sum of its two terms; a zero weight is a term of log 0.
-	constexpr double kLogZero = -std::numeric_limits<double>::infinity();
-	const double logRandom =
-		opts.zRandom > 0.0 ? std::log(opts.zRandom / opts.maxRange) : kLogZero;
-	const double logHit = opts.zHit > 0.0 ? std::log(opts.zHit) : kLogZero;
-	const double inverseTwoVariance = 1.0 / (2.0 * opts.sigma * opts.sigma);
-	// Halfway to the cut: neither a hit nor a miss.
-	const double neutralDistance = 0.5 * opts.maxCorrsDistance;
-
+	const auto& R = sensorPose.getRotationMatrix();
 	const std::size_t n = scan->getScanSize();
+	const std::size_t decimation = opts.decimation;
+	// The rays' directions turn by a fixed angle from one scored ray to the
+	// next: one sin/cos for the scan, not one per ray. A single-beam scan
+	// looks straight ahead, as insertion reads it.
+	const double first = n > 1 ? scan->getScanAngle(0) : 0.0;
+	const double turn =
+		n > 1 ? (scan->getScanAngle(1) - first) * static_cast<double>(decimation) : 0.0;
+	double c = std::cos(first), s = std::sin(first);
+	const double turnC = std::cos(turn), turnS = std::sin(turn);
 	double logLikelihood = 0.0;
-	for (std::size_t i = 0; i < n; i += opts.decimation)
+	for (std::size_t i = 0; i < n; i += decimation)
 	{
 		const double r = scan->getScanRange(i);
-		if (!scan->getScanRangeValidity(i) || !std::isfinite(r) || r <= 0.0 ||
-			r >= opts.maxRange)
-			continue;
-		// A single-beam scan looks straight ahead, as insertion reads it.
-		const double angle = n > 1 ? scan->getScanAngle(i) : 0.0;
-		double gx, gy, gz;
-		sensorPose.composePoint(
-			r * std::cos(angle), r * std::sin(angle), 0.0, gx, gy, gz);
-
-		double d;
-		bool unseen;
-		field->lookup(gx, gy, d, unseen);
-		// No obstacle within the cut: the exact cut, not its float copy.
-		if (d >= static_cast<double>(field->cutDistance))
-			d = unseen && opts.unknownAsNeutral ? neutralDistance
-												: opts.maxCorrsDistance;
-		logLikelihood +=
-			logAddExp(logRandom, logHit - d * d * inverseTwoVariance);
+		if (scan->getScanRangeValidity(i) && std::isfinite(r) && r > 0.0 &&
+			r < opts.maxRange)
+		{
+			// The end point in the sensor's frame, then in the world.
+			const double lx = r * c, ly = r * s;
+			logLikelihood += field->scoreAt(
+				sensorPose.x() + R(0, 0) * lx + R(0, 1) * ly,
+				sensorPose.y() + R(1, 0) * lx + R(1, 1) * ly);
+		}
+		const double nc = c * turnC - s * turnS;
+		s = s * turnC + c * turnS;
+		c = nc;
 	}
 	return logLikelihood;
 }

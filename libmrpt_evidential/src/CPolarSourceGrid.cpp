@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "SectorRow.h"
+
 namespace mrpt_evidential
 {
 void TSourceGridOptions::validate() const
@@ -46,7 +48,18 @@ void CPolarSourceGrid::build(
 	const double beamSpacing =
 		nBeams > 1 ? aperture / static_cast<double>(nBeams - 1) : aperture;
 	m_spacing = std::max(options.sectorWidth, beamSpacing);
-	if (nBeams > 1)
+	// A scan of a full turn has its first and last beams in the same
+	// direction (MRPT spreads N beams over [-pi, pi]): its sectors go round
+	// once, evenly, and the last beam joins the first sector.
+	m_fullTurn = nBeams > 1 && aperture >= 2 * M_PI - 1e-6;
+	if (m_fullTurn)
+	{
+		m_sectorCount = std::max<std::size_t>(
+			1, static_cast<std::size_t>(std::lround(2 * M_PI / m_spacing)));
+		m_spacing = 2 * M_PI / static_cast<double>(m_sectorCount);
+		m_firstAngle = -M_PI;
+	}
+	else if (nBeams > 1)
 	{
 		m_firstAngle = -0.5 * aperture;
 		m_sectorCount =
@@ -71,11 +84,12 @@ void CPolarSourceGrid::build(
 		std::size_t sector = 0;
 		if (nBeams > 1)
 		{
-			const double position =
-				(scan.getScanAngle(i) - m_firstAngle) / m_spacing;
-			sector = std::min<std::size_t>(
-				m_sectorCount - 1,
-				static_cast<std::size_t>(std::max(0.0, std::round(position))));
+			const double position = std::max(
+				0.0, std::round((scan.getScanAngle(i) - m_firstAngle) / m_spacing));
+			sector = m_fullTurn
+				? static_cast<std::size_t>(position) % m_sectorCount
+				: std::min<std::size_t>(
+					  m_sectorCount - 1, static_cast<std::size_t>(position));
 		}
 		const double r = scan.getScanRange(i);
 		const bool valid = scan.getScanRangeValidity(i) && std::isfinite(r) &&
@@ -89,14 +103,26 @@ void CPolarSourceGrid::build(
 		m_observed[sector] = 1;
 	}
 
-	m_masses.resize(m_sectorCount * m_binCount);
-	m_informedBins.resize(m_sectorCount);
+	// Rows keep their vacuous tails from one scan to the next: only what the
+	// previous scan wrote is cleared, so the cost follows the ranges, not
+	// maxRange. A new shape starts from an all-vacuous grid.
+	if (m_rowsShape != std::make_pair(m_sectorCount, m_binCount))
+	{
+		m_masses.assign(m_sectorCount * m_binCount, Mass::vacuous());
+		m_informedBins.assign(m_sectorCount, 0);
+		m_freeBins.assign(m_sectorCount, 0);
+		m_rowsShape = {m_sectorCount, m_binCount};
+	}
 	m_maxInformedBins = 0;
 	for (std::size_t s = 0; s < m_sectorCount; ++s)
 	{
-		m_informedBins[s] = sectorMassesInto(
+		Mass* row = m_masses.data() + s * m_binCount;
+		std::fill(row, row + m_informedBins[s], Mass::vacuous());
+		const detail::SectorExtent extent = detail::writeSectorRow(
 			options.sensorModel, m_impacts[s].data(), m_impacts[s].size(),
-			m_binSize, m_binCount, m_masses.data() + s * m_binCount);
+			m_binSize, m_binCount, row);
+		m_informedBins[s] = extent.informedBins;
+		m_freeBins[s] = extent.freeBins;
 		m_maxInformedBins = std::max(m_maxInformedBins, m_informedBins[s]);
 	}
 }

@@ -9,6 +9,7 @@
 #include <mrpt/typemeta/TEnumType.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -130,9 +131,10 @@ inline void writeValue(
 	mrpt::config::CConfigFileBase& target, const std::string& section,
 	const std::string& key, double value, const std::string& comment)
 {
+	// The shortest text that reads back as exactly the same value.
 	char text[40];
-	std::snprintf(text, sizeof(text), "%.17g", value);
-	target.write(section, key, std::string(text), -1, -1, comment);
+	const auto end = std::to_chars(text, text + sizeof(text), value).ptr;
+	target.write(section, key, std::string(text, end), -1, -1, comment);
 }
 inline void writeValue(
 	mrpt::config::CConfigFileBase& target, const std::string& section,

@@ -99,8 +99,9 @@ void EvidentialGridStorage::setDecayRate(double perSecond)
 			"decay rate must be a finite number >= 0, got " +
 			std::to_string(perSecond));
 	if (perSecond == m_decayRate) return;
-	// Cells decay under the old rate up to now, under the new one from now on.
-	rebaseStamps();
+	// Cells decay under the old rate up to now, under the new one from now
+	// on; before the first insertion there is nothing to decay.
+	if (m_insertions > 0) rebaseStamps();
 	m_decayRate = perSecond;
 	updateGains();
 }

@@ -3,6 +3,8 @@
 #include <mrpt_evidential/SensorModel.h>
 #include <mrpt_evidential/combination.h>
 
+#include "SectorRow.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -98,25 +100,24 @@ double profileWeight(
 
 }  // namespace
 
-std::size_t sectorMassesInto(
+namespace detail
+{
+SectorExtent writeSectorRow(
 	const SensorModelParams& params, const double* impactRanges,
 	std::size_t nImpacts, double binSize, std::size_t nBins, Mass* out)
 {
-	checkArguments(params, impactRanges, nImpacts, binSize);
-	std::fill(out, out + nBins, Mass::vacuous());
-	if (nImpacts == 0) return 0;
-
+	if (nImpacts == 0) return {};
 	std::size_t firstOccupied = nBins, occupiedEnd = 0;
 	for (std::size_t i = 0; i < nImpacts; ++i)
 	{
 		const double r = impactRanges[i];
 		const Band band = occupiedBand(params, r, binSize, nBins);
 		firstOccupied = std::min(firstOccupied, band.first);
-		if (band.first < nBins)
-			occupiedEnd = std::max(occupiedEnd, std::min(band.last + 1, nBins));
+		if (band.first >= nBins) continue;
+		occupiedEnd = std::max(occupiedEnd, std::min(band.last + 1, nBins));
 		if (params.model == SensorModel::MultiEcho)
 		{
-			if (band.first < nBins) out[band.first] = Mass::simpleOccupied(params.muO);
+			out[band.first] = Mass::simpleOccupied(params.muO);
 			continue;
 		}
 		// Reinforcement: the occupied mass of a bin is 1 - prod(1 - muO g_i)
@@ -127,15 +128,27 @@ std::size_t sectorMassesInto(
 			out[b].unknown *= 1.0 - params.muO * profileWeight(params, r, band, b, binSize);
 	}
 	if (params.model != SensorModel::MultiEcho)
-		for (std::size_t b = firstOccupied; b < nBins; ++b)
+		for (std::size_t b = firstOccupied; b < occupiedEnd; ++b)
 			out[b].occupied = 1.0 - out[b].unknown;
 
 	// Every beam crossed the bins before the nearest band.
-	const double freeWeight = params.model == SensorModel::MultiEcho
+	const double freeWeight = params.model == SensorModel::MultiEcho || nImpacts == 1
 		? params.muF
 		: 1.0 - std::pow(1.0 - params.muF, static_cast<double>(nImpacts));
 	std::fill(out, out + firstOccupied, Mass::simpleFree(freeWeight));
-	return std::max(firstOccupied, occupiedEnd);
+	return {firstOccupied, std::max(firstOccupied, occupiedEnd)};
+}
+}  // namespace detail
+
+std::size_t sectorMassesInto(
+	const SensorModelParams& params, const double* impactRanges,
+	std::size_t nImpacts, double binSize, std::size_t nBins, Mass* out)
+{
+	checkArguments(params, impactRanges, nImpacts, binSize);
+	std::fill(out, out + nBins, Mass::vacuous());
+	return detail::writeSectorRow(
+			   params, impactRanges, nImpacts, binSize, nBins, out)
+		.informedBins;
 }
 
 std::vector<Mass> sectorMasses(

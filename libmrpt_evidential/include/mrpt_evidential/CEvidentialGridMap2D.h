@@ -7,6 +7,7 @@
 #include <mrpt/typemeta/TEnumType.h>
 #include <mrpt_evidential/CPolarSourceGrid.h>
 #include <mrpt_evidential/EvidentialGridStorage.h>
+#include <mrpt_evidential/PolarToCartesian.h>
 #include <mrpt_evidential/combination.h>
 
 #include <cstddef>
@@ -375,6 +376,7 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	std::size_t m_maxCells = kDefaultMaxCells;
 	/** Scratch space of insertion, kept to avoid allocations. */
 	CPolarSourceGrid m_sourceGrid;
+	CPolarToCartesian m_transform;
 	/** The cell-budget and tilted-scan messages are printed once per map. */
 	bool m_budgetWarningShown = false, m_tiltNoticeShown = false;
 

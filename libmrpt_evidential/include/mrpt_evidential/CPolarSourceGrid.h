@@ -7,6 +7,7 @@
 #include <mrpt_evidential/SensorModel.h>
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace mrpt::obs
@@ -42,7 +43,8 @@ struct TSourceGridOptions
  *
  * Sector s is centred at angle firstSectorAngle() + s * sectorSpacing()
  * (radians, counterclockwise, 0 = the sensor's forward axis), so angles grow
- * with s whatever the scan's direction (rightToLeft). Bin b covers ranges
+ * with s whatever the scan's direction (rightToLeft). A scan whose aperture
+ * is a full turn gets sectors that go round once (fullTurn()). Bin b covers ranges
  * [b binSize, (b + 1) binSize). Each beam goes to the sector nearest to its
  * angle; its range is an impact of that sector when it is valid: flagged
  * valid, finite and > 0. Other ranges are no return (see
@@ -69,6 +71,9 @@ class CPolarSourceGrid
 	{
 		return m_firstAngle + static_cast<double>(s) * m_spacing;
 	}
+	/** True for a scan of a full turn: the sectors go round once, and the
+	 * last one neighbours the first. */
+	bool fullTurn() const { return m_fullTurn; }
 	/** True when at least one beam of the sector gave evidence (a valid return,
 	 * or an invalid one read as free). A sector that is not observed is
 	 * vacuous. */
@@ -77,21 +82,30 @@ class CPolarSourceGrid
 	/** Number of leading bins of sector s that may hold evidence; every bin
 	 * from it on is vacuous. */
 	std::size_t informedBins(std::size_t s) const { return m_informedBins.at(s); }
+	/** Number of leading bins of sector s that all hold its free mass (the
+	 * mass of bin 0): the bins before its nearest impact. */
+	std::size_t freeBins(std::size_t s) const { return m_freeBins.at(s); }
 	/** The largest informedBins() of all sectors. */
 	std::size_t maxInformedBins() const { return m_maxInformedBins; }
 
 	/** The masses of one sector's row, binCount() of them.
 	 * \throws std::out_of_range if s >= sectorCount(). */
 	const Mass* sectorRow(std::size_t s) const;
+	/** All rows, row-major (sector s starts at s * binCount()), for loops
+	 * that index them directly. */
+	const Mass* rows() const { return m_masses.data(); }
 	/** \throws std::out_of_range if a coordinate is out of range. */
 	const Mass& at(std::size_t sector, std::size_t bin) const;
 
    private:
 	std::size_t m_sectorCount = 0, m_binCount = 0;
 	double m_binSize = 0.0, m_firstAngle = 0.0, m_spacing = 0.0;
+	bool m_fullTurn = false;
 	std::vector<Mass> m_masses;  //!< row-major, one row per sector
 	std::vector<char> m_observed;
-	std::vector<std::size_t> m_informedBins;
+	std::vector<std::size_t> m_informedBins, m_freeBins;
+	/** Sectors and bins the rows were laid out for. */
+	std::pair<std::size_t, std::size_t> m_rowsShape{0, 0};
 	std::size_t m_maxInformedBins = 0;
 	std::vector<std::vector<double>> m_impacts;  //!< per sector, reused
 };

@@ -115,6 +115,11 @@ class EvidentialGridStorage
 		c.stamp = m_currentStamp;
 	}
 
+	/** Raw access for insertion kernels that fuse in place: they must leave
+	 * a consistent cell stamped with currentStamp(), its masses decayed with
+	 * decayFactor() of its old stamp before fusion. */
+	QuantizedCell& rawCell(std::size_t idx) { return m_cells[idx]; }
+
 	/** exp(-decayRate (latestTime - time of stamp)). */
 	double decayFactor(std::uint16_t stamp) const
 	{

@@ -1,0 +1,178 @@
+/* evgrid: reading the MRPT objects of a file one at a time. */
+
+#include "CObjectFileReader.h"
+
+#include <mrpt/serialization/CArchive.h>
+#include <zlib.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <new>
+#include <stdexcept>
+
+#include "CommandLine.h"
+
+namespace evgrid
+{
+/** A read-only MRPT archive over zlib's gz reader, which reads plain files
+ * as they are. It records what stopped a read short: MRPT turns every
+ * exception raised inside an object into the same "EOF" message, so the cause
+ * must be kept aside. */
+class CObjectFileReader::CZlibArchive : public mrpt::serialization::CArchive
+{
+   public:
+	explicit CZlibArchive(gzFile f) : m_f(f) {}
+	~CZlibArchive() override { gzclose(m_f); }
+
+	/** The next byte without consuming it; -1 at the end or on an error. */
+	int peek()
+	{
+		const int c = gzgetc(m_f);
+		if (c >= 0) gzungetc(c, m_f);
+		return c;
+	}
+	/** zlib's error state: Z_OK, Z_BUF_ERROR (compressed data ends early) or
+	 * an error code, with its message. */
+	int zlibError(std::string& message) const
+	{
+		int code = Z_OK;
+		message = gzerror(m_f, &code);
+		return code;
+	}
+	std::uint64_t decompressedOffset() const
+	{
+		return static_cast<std::uint64_t>(gztell(m_f));
+	}
+	std::uint64_t fileOffset() const
+	{
+		return static_cast<std::uint64_t>(gzoffset(m_f));
+	}
+	bool isDirect() const { return gzdirect(m_f) != 0; }
+
+	/** Whether a read came short since the last reset. */
+	bool hitEnd() const { return m_hitEnd; }
+	void resetHitEnd() { m_hitEnd = false; }
+
+   protected:
+	std::size_t write(const void*, std::size_t) override
+	{
+		throw std::logic_error("CObjectFileReader: the archive is read-only");
+	}
+	std::size_t read(void* buf, std::size_t len) override
+	{
+		auto* bytes = static_cast<char*>(buf);
+		std::size_t done = 0;
+		while (done < len)
+		{
+			const auto chunk = static_cast<unsigned>(std::min<std::size_t>(
+				len - done, std::numeric_limits<int>::max()));
+			const int n = gzread(m_f, bytes + done, chunk);
+			if (n <= 0) break;
+			done += static_cast<std::size_t>(n);
+		}
+		if (done < len) m_hitEnd = true;
+		return done;
+	}
+
+   private:
+	gzFile m_f;
+	bool m_hitEnd = false;
+};
+
+CObjectFileReader::CObjectFileReader(const std::string& path) : m_path(path)
+{
+	std::error_code ec;
+	if (std::filesystem::is_directory(path, ec))
+		throw std::runtime_error(path + ": is a directory, not a file");
+	errno = 0;
+	gzFile f = gzopen(path.c_str(), "rb");
+	if (!f)
+		throw std::runtime_error(
+			path + ": cannot open: " +
+			(errno != 0 ? std::strerror(errno) : "out of memory"));
+	m_archive = std::make_unique<CZlibArchive>(f);
+	m_fileSize = std::filesystem::file_size(path, ec);
+	if (ec) m_fileSize = 0;
+}
+
+CObjectFileReader::~CObjectFileReader() = default;
+
+bool CObjectFileReader::isCompressed() const { return !m_archive->isDirect(); }
+
+double CObjectFileReader::fractionRead() const
+{
+	if (m_fileSize == 0) return 0.0;
+	return std::min(
+		1.0, static_cast<double>(m_archive->fileOffset()) /
+			static_cast<double>(m_fileSize));
+}
+
+void CObjectFileReader::fail(const std::string& why) const
+{
+	// A damaged file can put any byte into a class name quoted here.
+	std::string printable = why;
+	for (char& c : printable)
+		if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
+	throw std::runtime_error(
+		m_path + ": entry " + std::to_string(m_entry) + " at byte " +
+		std::to_string(m_entryOffset) +
+		(isCompressed() ? " of the decompressed data" : "") + ": " + printable);
+}
+
+mrpt::serialization::CSerializable::Ptr CObjectFileReader::next()
+{
+	m_entryOffset = m_archive->decompressedOffset();
+	std::string zlibMessage;
+	if (m_archive->peek() < 0)
+	{
+		switch (m_archive->zlibError(zlibMessage))
+		{
+			case Z_OK: return nullptr;  // the clean end
+			case Z_BUF_ERROR:
+				fail("the compressed data stops early (truncated file?)");
+			default:
+				fail("cannot read the file: " + zlibMessage);
+		}
+	}
+
+	m_archive->resetHitEnd();
+	try
+	{
+		auto object = m_archive->ReadObject();
+		if (!object) fail("a null object where data was expected");
+		++m_entry;
+		return object;
+	}
+	catch (const std::bad_alloc&)
+	{
+		fail("a size beyond the memory available (corrupted data?)");
+	}
+	catch (const std::exception& e)
+	{
+		const int code = m_archive->zlibError(zlibMessage);
+		if (code != Z_OK && code != Z_BUF_ERROR)
+			fail("damaged compressed data: " + zlibMessage);
+		if (m_archive->hitEnd())
+			fail("the file ends inside this entry (truncated file?)");
+		const std::string cause = describe(e);
+		if (cause.find("which is not registered") != std::string::npos)
+			fail(
+				"an object of a class evgrid does not know (" + cause +
+				"): written by a newer MRPT or needing another library?");
+		// The first bytes of a file that is not MRPT's make a garbage
+		// header, and MRPT's complaint about it would only confuse.
+		if (m_entry == 0)
+			fail("not a rawlog, simplemap or map saved by MRPT");
+		// MRPT reports any failure inside an object as this "EOF", which here
+		// (the end was not reached) it is not.
+		if (cause.find("Cannot read object due to EOF") != std::string::npos)
+			fail("corrupted data: the entry does not parse");
+		fail("corrupted data (" + cause + ")");
+	}
+}
+
+}  // namespace evgrid

@@ -1,0 +1,44 @@
+/* evgrid: an output folder whose files change only when a run succeeds. */
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace evgrid
+{
+/** The output folder of `evgrid build`. Everything a run writes goes first
+ * into a hidden staging folder inside it (same file system, so a rename is
+ * atomic); commit() then renames each staged file over the old one and
+ * swaps staged folders (frames/) with the old ones as a whole. A run that
+ * fails before commit() leaves the folder as it was: the destructor removes
+ * the staging folder. */
+class COutputFolder
+{
+   public:
+	/** Creates `dir` if needed and the staging folder in it.
+	 * \throws std::runtime_error naming `dir` if either cannot be created or
+	 *  written: the check that the output can be written, done before any
+	 *  work. */
+	explicit COutputFolder(const std::string& dir);
+	~COutputFolder();
+	COutputFolder(const COutputFolder&) = delete;
+	COutputFolder& operator=(const COutputFolder&) = delete;
+
+	const std::string& dir() const { return m_dir; }
+	/** Where to write `name` (a file, or a folder such as "frames") during
+	 * the run. */
+	std::string staged(const std::string& name) const;
+	/** The final path of `name`. */
+	std::string final(const std::string& name) const;
+
+	/** Moves the staged entries `names` into place, in that order (put the
+	 * file that marks a complete run last), then removes the staging folder.
+	 * Names not staged are skipped. \throws std::runtime_error naming the
+	 * entry that cannot be moved. */
+	void commit(const std::vector<std::string>& names);
+
+   private:
+	std::string m_dir, m_staging;
+};
+
+}  // namespace evgrid

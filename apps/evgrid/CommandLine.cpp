@@ -1,0 +1,110 @@
+/* evgrid: command-line parsing shared by the subcommands. */
+
+#include "CommandLine.h"
+
+#include <iostream>
+#include <sstream>
+#include <vector>
+
+namespace evgrid
+{
+namespace
+{
+/** TCLAP's standard output, except that a parse error prints one short
+ * message instead of the whole usage, and is remembered so that the caller
+ * can tell an error from --help (TCLAP reports both as "do not run"). */
+class CQuietFailureOutput : public TCLAP::StdOutput
+{
+   public:
+	explicit CQuietFailureOutput(std::string name) : m_name(std::move(name)) {}
+
+	void failure(TCLAP::CmdLineInterface&, TCLAP::ArgException& e) override
+	{
+		m_failed = true;
+		printError(m_name, rephrase(e));
+		std::cerr << "Try '" << m_name << " --help'.\n";
+	}
+	bool failed() const { return m_failed; }
+
+   private:
+	/** TCLAP's messages in plainer words, naming the option. */
+	static std::string rephrase(const TCLAP::ArgException& e)
+	{
+		// argId() reads "Argument: (--every)" or "Argument: --bogus".
+		std::string arg = e.argId();
+		const std::string tag = "Argument: ";
+		if (arg.compare(0, tag.size(), tag) == 0) arg.erase(0, tag.size());
+		if (arg.size() > 1 && arg.front() == '(' && arg.back() == ')')
+			arg = arg.substr(1, arg.size() - 2);
+		const std::string error = e.error();
+		if (error.rfind("Couldn't find match for argument", 0) == 0)
+			return "unknown option or extra argument '" + arg + "'";
+		const std::string badValue = "Couldn't read argument value from string ";
+		if (error.rfind(badValue, 0) == 0)
+			return "bad value " + error.substr(badValue.size()) + " for " + arg;
+		return arg.empty() || arg == " " ? error : error + " (" + arg + ")";
+	}
+
+	std::string m_name;
+	bool m_failed = false;
+};
+}  // namespace
+
+ParseResult parse(
+	TCLAP::CmdLine& cmd, const std::string& name, int argc, char** argv,
+	int first)
+{
+	CQuietFailureOutput output(name);
+	cmd.setOutput(&output);
+	// TCLAP takes argv[0] as the program name shown in the usage.
+	std::vector<const char*> args{name.c_str()};
+	for (int i = first; i < argc; ++i) args.push_back(argv[i]);
+	const bool run = cmd.parse(static_cast<int>(args.size()), args.data());
+	cmd.setOutput(nullptr);
+	if (run) return ParseResult::Run;
+	return output.failed() ? ParseResult::Error : ParseResult::Done;
+}
+
+std::string requireMapFile(const std::string& value)
+{
+	if (value.empty())
+		throw UsageError("missing the map file (e.g. out/map.evgrid)");
+	if (value[0] == '-')
+		throw UsageError(
+			"unknown option or extra argument '" + value +
+			"' (a map file named so: write ./" + value + ")");
+	return value;
+}
+
+void requireAtLeast(const std::string& option, int value, int minimum)
+{
+	if (value < minimum)
+		throw UsageError(
+			option + " must be at least " + std::to_string(minimum) +
+			", got " + std::to_string(value));
+}
+
+void printError(const std::string& name, const std::string& message)
+{
+	std::cerr << name << ": error: " << message << "\n";
+}
+
+std::string describe(const std::exception& e)
+{
+	// MRPT exceptions read "==== MRPT exception ====\nMessage: ...\nLocation:
+	// ...\nCall stack backtrace: ...", nested ones repeated inside; the last
+	// "Message:" is the original cause.
+	const std::string what = e.what();
+	std::istringstream lines(what);
+	std::string line, message;
+	while (std::getline(lines, line))
+	{
+		const std::string tag = "Message:";
+		if (line.compare(0, tag.size(), tag) != 0) continue;
+		const auto start = line.find_first_not_of(' ', tag.size());
+		if (start != std::string::npos) message = line.substr(start);
+	}
+	return message.empty() ? what : message;
+}
+
+}  // namespace evgrid

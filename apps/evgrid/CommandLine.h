@@ -1,0 +1,53 @@
+/* evgrid: command-line parsing shared by the subcommands. */
+#pragma once
+
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace evgrid
+{
+/** Exit codes: 0 success, 1 a runtime failure (a file that cannot be read or
+ * written), 2 a command line that does not make sense. */
+constexpr int kExitFailure = 1;
+constexpr int kExitUsage = 2;
+
+/** A command line that parses but whose values make no sense together. */
+class UsageError : public std::runtime_error
+{
+   public:
+	using std::runtime_error::runtime_error;
+};
+
+/** What parse() found. */
+enum class ParseResult
+{
+	Run,  //!< options are set, go on
+	Done,  //!< --help or --version was printed: exit 0
+	Error  //!< an error was printed: exit kExitUsage
+};
+
+/** Parses argv[first..argc) with `cmd`, printing TCLAP's help and version on
+ * stdout and a short error (with a hint to --help) on stderr. `name` is what
+ * messages call the program, e.g. "evgrid build". */
+ParseResult parse(
+	TCLAP::CmdLine& cmd, const std::string& name, int argc, char** argv,
+	int first);
+
+/** The saved map named by the positional argument of inspect and export.
+ * \throws UsageError if it is missing or looks like an option (TCLAP takes
+ *  any word there, options included). */
+std::string requireMapFile(const std::string& value);
+
+/** Throws UsageError unless `value` >= `minimum`. */
+void requireAtLeast(const std::string& option, int value, int minimum);
+
+/** Prints "<name>: error: <message>" on stderr. */
+void printError(const std::string& name, const std::string& message);
+
+/** The text of an exception without MRPT's decoration (stack of source
+ * locations): the lines that say what went wrong. */
+std::string describe(const std::exception& e);
+
+}  // namespace evgrid

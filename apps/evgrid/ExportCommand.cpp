@@ -1,0 +1,141 @@
+/* evgrid export: a saved map in other formats. */
+
+#include <mrpt/img/CImage.h>
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <filesystem>
+#include <iostream>
+#include <vector>
+
+#include "AtomicFile.h"
+#include "CommandLine.h"
+#include "Commands.h"
+#include "MapFiles.h"
+
+using mrpt_evidential::CEvidentialGridMap2D;
+using mrpt_evidential::detail::writeFileAtomicallyByName;
+
+namespace evgrid
+{
+namespace
+{
+const std::string kName = "evgrid export";
+
+void createFolder(const std::filesystem::path& dir)
+{
+	if (dir.empty()) return;
+	std::error_code ec;
+	std::filesystem::create_directories(dir, ec);
+	if (ec)
+		throw std::runtime_error(
+			dir.string() + ": cannot create the folder: " + ec.message());
+}
+
+std::vector<std::string> writePictures(
+	const CEvidentialGridMap2D& map, const std::string& dir)
+{
+	createFolder(dir);
+	std::vector<std::string> written;
+	mrpt::img::CImage picture;
+	const auto save = [&](const std::string& name) {
+		const std::string path = (std::filesystem::path(dir) / name).string();
+		writeFileAtomicallyByName(path, [&picture](const std::string& tmp) {
+			return picture.saveToFile(tmp);
+		});
+		written.push_back(path);
+	};
+	map.getAsEvidentialImage(picture);
+	save("evidential.png");
+	map.getAsBetPImage(picture);
+	save("betp.png");
+	map.getAsConflictImage(picture);
+	save("conflict.png");
+	return written;
+}
+
+/** The format MRPT programs read as `.gridmap` (e.g. pf-localization's
+ * map_file): the COccupancyGridMap2D object in MRPT's serialization,
+ * gzip-compressed. */
+void writeGridmap(const CEvidentialGridMap2D& map, const std::string& path)
+{
+	mrpt::maps::COccupancyGridMap2D grid;
+	map.getAsOccupancyGrid(grid);
+	writeFileAtomicallyByName(path, [&grid](const std::string& tmp) {
+		mrpt::io::CFileGZOutputStream f(tmp);
+		auto archive = mrpt::serialization::archiveFrom(f);
+		archive << grid;
+		f.close();
+		return true;
+	});
+}
+}  // namespace
+
+int runExport(int argc, char** argv, int first)
+{
+	TCLAP::CmdLine cmd(
+		"Writes a saved map (map.evgrid) in other formats; give at least one "
+		"of --png, --gridmap, --ros. Each file is written under a temporary "
+		"name and renamed, so a failure leaves the previous one in place. See "
+		"doc/evgrid.md.",
+		' ', EVGRID_VERSION);
+	TCLAP::SwitchArg argQuiet(
+		"q", "quiet", "Do not list the files written.", cmd, false);
+	TCLAP::ValueArg<std::string> argRos(
+		"", "ros",
+		"ROS map_server pair PREFIX.pgm + PREFIX.yaml: occupancy = BetP, "
+		"trinary (0 occupied above 0.65, 254 free below 0.196, 205 unknown).",
+		false, "", "PREFIX", cmd);
+	TCLAP::ValueArg<std::string> argGridmap(
+		"", "gridmap",
+		"MRPT occupancy grid (COccupancyGridMap2D, gzip-compressed, as "
+		"pf-localization's map_file reads it); cell occupancy = BetP.",
+		false, "", "FILE", cmd);
+	TCLAP::ValueArg<std::string> argPng(
+		"", "png",
+		"Folder (created if missing) for evidential.png, betp.png and "
+		"conflict.png, one pixel per cell, north up.",
+		false, "", "DIR", cmd);
+	TCLAP::UnlabeledValueArg<std::string> argMap(
+		"map", "Required. The saved map (.evgrid, plain or gzip-compressed).",
+		false, "", "MAP", cmd);
+
+	switch (parse(cmd, kName, argc, argv, first))
+	{
+		case ParseResult::Done: return 0;
+		case ParseResult::Error: return kExitUsage;
+		case ParseResult::Run: break;
+	}
+	requireMapFile(argMap.getValue());
+	if (!argPng.isSet() && !argGridmap.isSet() && !argRos.isSet())
+		throw UsageError("nothing to do: give --png, --gridmap and/or --ros");
+	for (auto* arg : {&argPng, &argGridmap, &argRos})
+		if (arg->isSet() && arg->getValue().empty())
+			throw UsageError("--" + arg->getName() + " needs a non-empty value");
+
+	const auto map = loadMap(argMap.getValue());
+	for (auto* arg : {&argGridmap, &argRos})
+		if (arg->isSet())
+			createFolder(std::filesystem::path(arg->getValue()).parent_path());
+	std::vector<std::string> written;
+	if (argPng.isSet())
+		for (const auto& path : writePictures(*map, argPng.getValue()))
+			written.push_back(path);
+	if (argGridmap.isSet())
+	{
+		writeGridmap(*map, argGridmap.getValue());
+		written.push_back(argGridmap.getValue());
+	}
+	if (argRos.isSet())
+	{
+		map->saveAsROSMap(argRos.getValue());
+		written.push_back(argRos.getValue() + ".pgm");
+		written.push_back(argRos.getValue() + ".yaml");
+	}
+	if (!argQuiet.getValue())
+		for (const auto& path : written) std::cout << "wrote " << path << "\n";
+	return 0;
+}
+
+}  // namespace evgrid

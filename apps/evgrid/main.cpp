@@ -1,0 +1,77 @@
+/* evgrid: build, inspect and export evidential (Dempster-Shafer) occupancy
+ * grid maps. `evgrid <subcommand> --help` documents each subcommand. */
+
+#include <cstring>
+#include <iostream>
+#include <string>
+
+#include "CommandLine.h"
+#include "Commands.h"
+
+namespace
+{
+void printOverview(std::ostream& out)
+{
+	out << "evgrid " EVGRID_VERSION
+		   " - evidential (Dempster-Shafer) occupancy grid maps for MRPT\n\n"
+		   "Usage: evgrid <subcommand> [options]\n\n"
+		   "Subcommands:\n"
+		   "  build    build a map from a rawlog or a simplemap: map.evgrid, "
+		   "pictures, summary\n"
+		   "  inspect  print a saved map's geometry, options and counts per "
+		   "decision, or one cell\n"
+		   "  export   write a saved map as PNG pictures, an MRPT .gridmap, or "
+		   "a ROS map_server PGM + YAML pair\n\n"
+		   "'evgrid <subcommand> --help' lists a subcommand's options.\n"
+		   "Exit codes: 0 success, 1 failure (the message names the file), 2 "
+		   "bad command line.\n";
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+	if (argc < 2)
+	{
+		printOverview(std::cerr);
+		return evgrid::kExitUsage;
+	}
+	const std::string sub = argv[1];
+	if (sub == "--help" || sub == "-h" || sub == "help")
+	{
+		printOverview(std::cout);
+		return 0;
+	}
+	if (sub == "--version")
+	{
+		std::cout << "evgrid " EVGRID_VERSION "\n";
+		return 0;
+	}
+
+	int (*run)(int, char**, int) = nullptr;
+	if (sub == "build") run = evgrid::runBuild;
+	else if (sub == "inspect") run = evgrid::runInspect;
+	else if (sub == "export") run = evgrid::runExport;
+	else
+	{
+		evgrid::printError("evgrid", "unknown subcommand '" + sub + "'");
+		std::cerr << "Try 'evgrid --help'.\n";
+		return evgrid::kExitUsage;
+	}
+
+	const std::string name = "evgrid " + sub;
+	try
+	{
+		return run(argc, argv, 2);
+	}
+	catch (const evgrid::UsageError& e)
+	{
+		evgrid::printError(name, e.what());
+		std::cerr << "Try '" << name << " --help'.\n";
+		return evgrid::kExitUsage;
+	}
+	catch (const std::exception& e)
+	{
+		evgrid::printError(name, evgrid::describe(e));
+		return evgrid::kExitFailure;
+	}
+}

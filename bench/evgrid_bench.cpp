@@ -1,0 +1,455 @@
+/* evgrid-bench: the evidential grid against MRPT's COccupancyGridMap2D, on the
+ * same scans and poses, in one process. After Google Benchmark's table it
+ * prints the ratios that matter (ours / MRPT's) and the memory per cell.
+ *
+ *   evgrid-bench [--smoke] [Google Benchmark flags]
+ *
+ * --smoke runs every case for a few iterations only (CTest uses it so that
+ * the program cannot rot); timings from it mean nothing. */
+
+#include <benchmark/benchmark.h>
+#include <mrpt/core/Clock.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CRawlog.h>
+#include <mrpt/obs/stock_observations.h>
+#include <mrpt/poses/CPose3D.h>
+#include <mrpt/serialization/CArchive.h>
+#include <mrpt_evidential/CEvidentialGridMap2D.h>
+#include <mrpt_evidential/PolarToCartesian.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+using mrpt::obs::CObservation2DRangeScan;
+using mrpt::poses::CPose3D;
+using namespace mrpt_evidential;
+
+namespace
+{
+bool smoke = false;
+/** Insertions per case, as mrpt-performance's grid test does. */
+constexpr int kInsertions = 2000;
+
+#ifndef MRPT_DATASETS_DIR
+#define MRPT_DATASETS_DIR "/usr/share/mrpt/datasets"
+#endif
+
+// ---------------------------------------------------------------------------
+// Inputs, shared by every case
+// ---------------------------------------------------------------------------
+
+enum class ScanKind
+{
+	Stock,	//!< MRPT's example scan: 361 rays over 180 degrees
+	Sena,  //!< the SENA rawlog's real scans, in turn
+	Wide  //!< synthetic: 1081 rays over 270 degrees, ranges up to 30 m
+};
+const char* name(ScanKind k)
+{
+	switch (k)
+	{
+		case ScanKind::Stock: return "stock";
+		case ScanKind::Sena: return "sena";
+		case ScanKind::Wide: return "wide";
+	}
+	return "";
+}
+
+/** The scans of a kind; the insertion loop cycles through them. */
+const std::vector<CObservation2DRangeScan>& scans(ScanKind kind)
+{
+	static std::map<ScanKind, std::vector<CObservation2DRangeScan>> cache;
+	auto& out = cache[kind];
+	if (!out.empty()) return out;
+	if (kind == ScanKind::Stock)
+	{
+		out.emplace_back();
+		mrpt::obs::stock_observations::example2DRangeScan(out.back());
+	}
+	else if (kind == ScanKind::Wide)
+	{
+		// A sensor in a 37 x 27 m hall, off its centre: ranges 7 to 30 m.
+		CObservation2DRangeScan s;
+		s.aperture = static_cast<float>(1.5 * M_PI);
+		s.maxRange = 30.0f;
+		s.resizeScan(1081);
+		for (std::size_t i = 0; i < 1081; ++i)
+		{
+			const double a = s.getScanAngle(i), c = std::cos(a), d = std::sin(a);
+			const double tx = c > 0 ? 25.0 / c : (c < 0 ? -12.0 / c : HUGE_VAL);
+			const double ty = d > 0 ? 18.0 / d : (d < 0 ? -9.0 / d : HUGE_VAL);
+			const double r = std::min({tx, ty, 29.9});
+			s.setScanRange(i, static_cast<float>(r));
+			s.setScanRangeValidity(i, true);
+		}
+		out.push_back(s);
+	}
+	else
+	{
+		mrpt::io::CFileGZInputStream file(
+			std::string(MRPT_DATASETS_DIR) +
+			"/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog");
+		auto archive = mrpt::serialization::archiveFrom(file);
+		mrpt::obs::CActionCollection::Ptr actions;
+		mrpt::obs::CSensoryFrame::Ptr frame;
+		mrpt::obs::CObservation::Ptr obs;
+		std::size_t entry = 0;
+		while (mrpt::obs::CRawlog::getActionObservationPairOrObservation(
+			archive, actions, frame, obs, entry))
+			if (frame)
+				for (const auto& o : *frame)
+					if (auto scan =
+							std::dynamic_pointer_cast<CObservation2DRangeScan>(o))
+						out.push_back(*scan);
+	}
+	return out;
+}
+
+/** The same maximum range for both maps. */
+double maxRangeOf(ScanKind kind) { return kind == ScanKind::Wide ? 30.0 : 15.0; }
+/** Half-size of the square map, metres, enough for the scans at every pose. */
+double halfSizeOf(ScanKind kind) { return kind == ScanKind::Wide ? 40.0 : 20.0; }
+
+/** kInsertions robot poses within 1 m of the origin, any heading (fixed
+ * seed). */
+const std::vector<CPose3D>& poses()
+{
+	static const std::vector<CPose3D> out = [] {
+		std::mt19937 rng(2026);
+		std::uniform_real_distribution<double> xy(-1.0, 1.0), yaw(-M_PI, M_PI);
+		std::vector<CPose3D> p;
+		for (int i = 0; i < kInsertions; ++i)
+			p.emplace_back(xy(rng), xy(rng), 0.0, yaw(rng), 0.0, 0.0);
+		return p;
+	}();
+	return out;
+}
+
+/** The scan to insert at step i, timestamped 0.1 s after the previous. */
+CObservation2DRangeScan scanAt(ScanKind kind, std::size_t i)
+{
+	const auto& all = scans(kind);
+	CObservation2DRangeScan s = all[i % all.size()];
+	s.timestamp = mrpt::Clock::fromDouble(1000.0 + 0.1 * static_cast<double>(i));
+	return s;
+}
+
+std::unique_ptr<mrpt::maps::COccupancyGridMap2D> mrptMap(
+	ScanKind kind, double resolution, bool widening)
+{
+	const double h = halfSizeOf(kind);
+	auto map = std::make_unique<mrpt::maps::COccupancyGridMap2D>(
+		-h, h, -h, h, resolution);
+	map->insertionOptions.maxDistanceInsertion = static_cast<float>(maxRangeOf(kind));
+	map->insertionOptions.wideningBeamsWithDistance = widening;
+	return map;
+}
+
+struct OurOptions
+{
+	SensorModel model = SensorModel::ReinforcedMultiEcho;
+	FusionRule rule = FusionRule::Conjunctive;
+	bool decay = true;
+};
+
+std::unique_ptr<CEvidentialGridMap2D> ourMap(
+	ScanKind kind, double resolution, const OurOptions& o, double halfSize = 0)
+{
+	const double h = halfSize > 0 ? halfSize : halfSizeOf(kind);
+	auto map = std::make_unique<CEvidentialGridMap2D>(-h, h, -h, h, resolution);
+	map->setMaxCells(std::max<std::size_t>(map->geometry().cellCount(), 100'000'000));
+	auto& io = map->insertionOptions;
+	io.sensorModel = o.model;
+	io.fusionRule = o.rule;
+	io.imprecision = o.model == SensorModel::ImpreciseMultiEcho ? resolution : 0.0;
+	io.decayRate = o.decay ? 0.01 : 0.0;
+	io.maxRange = maxRangeOf(kind);
+	return map;
+}
+
+std::string label(ScanKind kind, double resolution)
+{
+	char s[64];
+	std::snprintf(s, sizeof(s), "%s/%.2fm", name(kind), resolution);
+	return s;
+}
+
+// ---------------------------------------------------------------------------
+// Cases
+// ---------------------------------------------------------------------------
+
+/** One insertion per iteration, at the next pose; the map keeps growing
+ * denser as in a real run. */
+template <typename Map>
+void insertionLoop(benchmark::State& state, Map& map, ScanKind kind)
+{
+	std::size_t i = 0;
+	for (auto _ : state)
+	{
+		state.PauseTiming();
+		const CObservation2DRangeScan scan = scanAt(kind, i);
+		const CPose3D& pose = poses()[i % poses().size()];
+		state.ResumeTiming();
+		map.insertObservation(scan, pose);
+		++i;
+	}
+}
+
+void mrptInsert(benchmark::State& state, ScanKind kind, double res, bool widening)
+{
+	auto map = mrptMap(kind, res, widening);
+	insertionLoop(state, *map, kind);
+}
+
+void ourInsert(benchmark::State& state, ScanKind kind, double res, OurOptions o)
+{
+	auto map = ourMap(kind, res, o);
+	insertionLoop(state, *map, kind);
+}
+
+void ourInsertMapSize(benchmark::State& state, double halfSize)
+{
+	auto map = ourMap(ScanKind::Stock, 0.05, OurOptions{}, halfSize);
+	insertionLoop(state, *map, ScanKind::Stock);
+}
+
+/** Both maps built from the same 200 insertions, then one scan scored per
+ * iteration at the next pose (the likelihood caches warm up first). */
+template <typename Map>
+void likelihoodLoop(benchmark::State& state, Map& map, ScanKind kind)
+{
+	for (std::size_t i = 0; i < 200; ++i) map.insertObservation(scanAt(kind, i), poses()[i]);
+	const CObservation2DRangeScan scan = scanAt(kind, 0);
+	for (const auto& p : poses()) benchmark::DoNotOptimize(map.computeObservationLikelihood(scan, p));
+	std::size_t i = 0;
+	for (auto _ : state)
+	{
+		benchmark::DoNotOptimize(
+			map.computeObservationLikelihood(scan, poses()[i % poses().size()]));
+		++i;
+	}
+}
+
+void mrptLikelihood(benchmark::State& state, ScanKind kind, double res)
+{
+	auto map = mrptMap(kind, res, false);
+	likelihoodLoop(state, *map, kind);
+}
+
+void ourLikelihood(benchmark::State& state, ScanKind kind, double res)
+{
+	auto map = ourMap(kind, res, OurOptions{});
+	likelihoodLoop(state, *map, kind);
+}
+
+TSourceGridOptions sourceOptions(ScanKind kind, double res)
+{
+	CEvidentialGridMap2D::TInsertionOptions io;
+	io.maxRange = maxRangeOf(kind);
+	return io.sourceGridOptions(res);
+}
+
+void ourSourceGrid(benchmark::State& state, ScanKind kind, double res)
+{
+	CPolarSourceGrid polar;
+	const auto options = sourceOptions(kind, res);
+	const auto& scan = scans(kind).front();
+	for (auto _ : state)
+	{
+		polar.build(scan, options);
+		benchmark::DoNotOptimize(polar.rows());
+	}
+}
+
+void ourPolarToCartesian(benchmark::State& state, ScanKind kind, double res)
+{
+	CPolarSourceGrid polar;
+	polar.build(scans(kind).front(), sourceOptions(kind, res));
+	const double h = halfSizeOf(kind);
+	EvidentialGridStorage grid;
+	grid.reset(-h, h, -h, h, res, 100'000'000);
+	const PlanarSensorPose sensor{0.3, -0.2, 0.4, false};
+	CPolarToCartesian transform;
+	double sink = 0.0;
+	for (auto _ : state)
+	{
+		transform.setup(polar, sensor);
+		transform.forEachInformedCell(
+			grid.geometry(),
+			[&sink](std::size_t idx, const Mass& m) {
+				sink += m.free + static_cast<double>(idx & 1);
+			},
+			[&sink](std::size_t idx) { sink += static_cast<double>(idx & 1); });
+		benchmark::DoNotOptimize(sink);
+	}
+}
+
+// ---------------------------------------------------------------------------
+// Registration and the ratio report
+// ---------------------------------------------------------------------------
+
+const char* name(SensorModel m)
+{
+	switch (m)
+	{
+		case SensorModel::MultiEcho: return "MultiEcho";
+		case SensorModel::ReinforcedMultiEcho: return "Reinforced";
+		case SensorModel::ImpreciseMultiEcho: return "Imprecise";
+	}
+	return "";
+}
+const char* name(FusionRule r)
+{
+	switch (r)
+	{
+		case FusionRule::Conjunctive: return "Conjunctive";
+		case FusionRule::Dempster: return "Dempster";
+		case FusionRule::Yager: return "Yager";
+		case FusionRule::DuboisPrade: return "DuboisPrade";
+		case FusionRule::Cautious: return "Cautious";
+	}
+	return "";
+}
+
+template <typename Fn>
+void add(const std::string& caseName, Fn fn, bool insertion)
+{
+	auto* b = benchmark::RegisterBenchmark(caseName.c_str(), fn);
+	b->Unit(benchmark::kMicrosecond);
+	if (smoke)
+		b->Iterations(3);
+	else if (insertion)
+		b->Iterations(kInsertions);
+	else
+		b->MinTime(0.5);
+}
+
+void registerCases()
+{
+	for (const ScanKind kind : {ScanKind::Stock, ScanKind::Sena, ScanKind::Wide})
+		for (const double res : {0.05, 0.10})
+		{
+			const std::string at = label(kind, res);
+			add("mrpt/insert/plain/" + at,
+				[=](benchmark::State& s) { mrptInsert(s, kind, res, false); }, true);
+			add("mrpt/insert/widening/" + at,
+				[=](benchmark::State& s) { mrptInsert(s, kind, res, true); }, true);
+			for (const SensorModel model :
+				 {SensorModel::MultiEcho, SensorModel::ReinforcedMultiEcho,
+				  SensorModel::ImpreciseMultiEcho})
+				for (const bool decay : {true, false})
+				{
+					const OurOptions o{model, FusionRule::Conjunctive, decay};
+					add(std::string("ours/insert/") + name(model) + "/Conjunctive/" +
+							(decay ? "decay/" : "nodecay/") + at,
+						[=](benchmark::State& s) { ourInsert(s, kind, res, o); }, true);
+				}
+			for (const FusionRule rule :
+				 {FusionRule::Dempster, FusionRule::Yager, FusionRule::DuboisPrade,
+				  FusionRule::Cautious})
+			{
+				const OurOptions o{SensorModel::ReinforcedMultiEcho, rule, true};
+				add(std::string("ours/insert/Reinforced/") + name(rule) + "/decay/" + at,
+					[=](benchmark::State& s) { ourInsert(s, kind, res, o); }, true);
+			}
+			add("mrpt/likelihood/" + at,
+				[=](benchmark::State& s) { mrptLikelihood(s, kind, res); }, false);
+			add("ours/likelihood/" + at,
+				[=](benchmark::State& s) { ourLikelihood(s, kind, res); }, false);
+			add("ours/sourcegrid/" + at,
+				[=](benchmark::State& s) { ourSourceGrid(s, kind, res); }, false);
+			add("ours/polar2cart/" + at,
+				[=](benchmark::State& s) { ourPolarToCartesian(s, kind, res); }, false);
+		}
+	add("ours/mapsize/40m/stock/0.05m",
+		[](benchmark::State& s) { ourInsertMapSize(s, 20.0); }, true);
+	add("ours/mapsize/400m/stock/0.05m",
+		[](benchmark::State& s) { ourInsertMapSize(s, 200.0); }, true);
+}
+
+/** A run's name without the suffixes Google Benchmark adds. */
+std::string caseName(const std::string& runName)
+{
+	return runName.substr(0, runName.find("/iterations:")).substr(0, runName.find("/min_time:"));
+}
+
+/** Keeps each case's time per iteration for the ratios. */
+class RecordingReporter : public benchmark::ConsoleReporter
+{
+   public:
+	std::map<std::string, double> microseconds;
+	void ReportRuns(const std::vector<Run>& runs) override
+	{
+		for (const Run& r : runs)
+			if (!r.error_occurred && r.aggregate_name.empty())
+				microseconds[caseName(r.benchmark_name())] = r.GetAdjustedRealTime();
+		ConsoleReporter::ReportRuns(runs);
+	}
+};
+
+void printRatio(
+	const RecordingReporter& rep, const std::string& what, const std::string& ours,
+	const std::string& theirs, double target)
+{
+	const auto a = rep.microseconds.find(ours), b = rep.microseconds.find(theirs);
+	if (a == rep.microseconds.end() || b == rep.microseconds.end()) return;
+	const double ratio = a->second / b->second;
+	std::printf(
+		"%-58s %8.1f us / %8.1f us = %5.2f  (target <= %.2f: %s)\n", what.c_str(),
+		a->second, b->second, ratio, target, ratio <= target ? "met" : "NOT met");
+}
+
+void printReport(const RecordingReporter& rep)
+{
+	std::printf("\nRatios (ours / reference, lower is better):\n");
+	const std::string ours = "ours/insert/Reinforced/Conjunctive/decay/";
+	for (const char* at : {"stock/0.05m", "stock/0.10m", "sena/0.05m", "wide/0.05m"})
+	{
+		printRatio(rep, std::string("insert reinforced+decay vs widening, ") + at,
+				   ours + at, std::string("mrpt/insert/widening/") + at, 1.0);
+		printRatio(rep, std::string("insert reinforced+decay vs plain, ") + at,
+				   ours + at, std::string("mrpt/insert/plain/") + at, 2.0);
+		printRatio(rep, std::string("likelihood, ") + at,
+				   std::string("ours/likelihood/") + at,
+				   std::string("mrpt/likelihood/") + at, 1.5);
+	}
+	printRatio(rep, "insert into 400 x 400 m vs 40 x 40 m map",
+			   "ours/mapsize/400m/stock/0.05m", "ours/mapsize/40m/stock/0.05m", 1.1);
+
+	std::printf(
+		"\nMemory per cell: ours %zu bytes (masses and time stamp), plus 1 byte "
+		"while the likelihood field is in use;\n"
+		"                 COccupancyGridMap2D %zu byte, plus %zu bytes while its "
+		"likelihood cache is in use.\n",
+		sizeof(QuantizedCell), sizeof(mrpt::maps::COccupancyGridMap2D::cellType),
+		sizeof(double));
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+	// Our own flag first: Google Benchmark rejects flags it does not know.
+	std::vector<char*> args;
+	for (int i = 0; i < argc; ++i)
+		if (std::strcmp(argv[i], "--smoke") == 0)
+			smoke = true;
+		else
+			args.push_back(argv[i]);
+	int n = static_cast<int>(args.size());
+	benchmark::Initialize(&n, args.data());
+	if (benchmark::ReportUnrecognizedArguments(n, args.data())) return 2;
+	registerCases();
+	RecordingReporter reporter;
+	benchmark::RunSpecifiedBenchmarks(&reporter);
+	printReport(reporter);
+	benchmark::Shutdown();
+	return 0;
+}

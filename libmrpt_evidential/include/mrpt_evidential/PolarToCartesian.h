@@ -1,0 +1,258 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
+ * The bilinear transform of a polar SourceGrid onto the cells of a grid. */
+#pragma once
+
+#include <mrpt_evidential/CPolarSourceGrid.h>
+#include <mrpt_evidential/EvidentialGridStorage.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace mrpt::poses
+{
+class CPose3D;
+}
+
+namespace mrpt_evidential
+{
+/** Where a sensor lies in the map's plane. */
+struct PlanarSensorPose
+{
+	double x = 0.0, y = 0.0, yaw = 0.0;
+	/** True for a sensor mounted upside down: its angles turn clockwise in
+	 * the map. */
+	bool mirrored = false;
+};
+
+/** The sensor pose in the plane, or nothing when the sensor's x and y axes
+ * tilt more than `tolerance` radians out of the horizontal plane. */
+std::optional<PlanarSensorPose> planarSensorPose(
+	const mrpt::poses::CPose3D& sensor, double tolerance);
+
+/** Axis-aligned box. */
+struct Box
+{
+	double xMin = HUGE_VAL, xMax = -HUGE_VAL, yMin = HUGE_VAL, yMax = -HUGE_VAL;
+	void add(double x, double y)
+	{
+		xMin = std::min(xMin, x), xMax = std::max(xMax, x);
+		yMin = std::min(yMin, y), yMax = std::max(yMax, y);
+	}
+	bool empty() const { return !(xMin <= xMax && yMin <= yMax); }
+};
+
+namespace detail
+{
+/** atan2 to within 2e-6 rad, several times faster than std::atan2: on a
+ * 20 m ray the error is 0.04 mm. */
+inline double fastAtan2(double y, double x)
+{
+	const double ax = std::abs(x), ay = std::abs(y);
+	const double hi = std::max(ax, ay), lo = std::min(ax, ay);
+	if (hi == 0.0) return 0.0;
+	const double a = lo / hi, s = a * a;
+	// Odd minimax polynomial for atan on [0, 1].
+	double r = (((-0.0117212 * s + 0.05265332) * s - 0.11643287) * s +
+				0.19354346) * s;
+	r = ((r - 0.33262347) * s + 0.99997726) * a;
+	if (ay > ax) r = M_PI_2 - r;
+	if (x < 0.0) r = M_PI - r;
+	return y < 0.0 ? -r : r;
+}
+
+/** The two neighbours along one axis of the polar grid and the weight of the
+ * second; outside the first and last centres the nearest is used alone. */
+struct Neighbours
+{
+	std::size_t lo, hi;
+	double wHi;
+};
+
+inline Neighbours neighbours(double position, std::size_t count, bool wraps)
+{
+	// position >= -1 here: truncation of position + 1 is the floor, without
+	// std::floor's slow path on processors before SSE4.1.
+	const double shifted = position + 1.0;
+	const auto whole = static_cast<std::ptrdiff_t>(shifted);
+	const double w = shifted - static_cast<double>(whole);
+	const std::ptrdiff_t f = whole - 1;
+	if (f < 0)
+		return wraps ? Neighbours{count - 1, 0, w} : Neighbours{0, 0, 0.0};
+	const auto lo = static_cast<std::size_t>(f);
+	if (lo + 1 >= count)
+		return wraps && lo + 1 == count ? Neighbours{lo, 0, w}
+										: Neighbours{count - 1, count - 1, 0.0};
+	return {lo, lo + 1, w};
+}
+}  // namespace detail
+
+/** Places a polar SourceGrid at a sensor pose and visits the grid cells it
+ * informs, each once, with the bilinear mix of the four polar cells around
+ * the cell's centre (two sectors, two bins).
+ *
+ * Only the cells that can receive evidence are looked at: the region a scan
+ * informs (between two sector centres, up to the longer of the two sectors'
+ * reach) is a polygon around the sensor, filled row by row. Inside it, a
+ * second polygon holds the cells whose four polar neighbours are all the same
+ * free mass, the bulk of a scan: those cells need no polar coordinates and no
+ * mix, and are visited apart. Keep one object and reuse it: its buffers then
+ * stop allocating. */
+class CPolarToCartesian
+{
+   public:
+	/** Prepares the transform of `polar` (which must outlive the calls to
+	 * forEachInformedCell) placed at `sensor`. */
+	void setup(const CPolarSourceGrid& polar, const PlanarSensorPose& sensor);
+
+	/** Box holding every point the polar grid can inform (empty when it
+	 * informs nothing). */
+	const Box& box() const { return m_box; }
+
+	/** The free mass every cell of the uniform region receives. */
+	const Mass& uniformMass() const { return m_uniformMass; }
+
+	/** Visits every cell of `grid` that the polar grid informs, once:
+	 * visitUniform(cellIndex) for the cells whose mix is uniformMass(),
+	 * visitMixed(cellIndex, observed) for the others. Cells whose mix is
+	 * vacuous are not visited. A cell touched by a bin with occupied evidence
+	 * gets no free evidence: it holds part of what a beam hit, so that beam
+	 * does not prove it free (without this, walls gather free and occupied
+	 * evidence from scan to scan and turn into conflict). */
+	template <typename VisitMixed, typename VisitUniform>
+	void forEachInformedCell(
+		const GridGeometry& grid, VisitMixed&& visitMixed,
+		VisitUniform&& visitUniform);
+
+   private:
+	/** For each grid row from `first`, the sorted x where its centre line
+	 * crosses a polygon, as inclusive ranges of cell columns. */
+	struct RowSpans
+	{
+		std::vector<std::size_t> start, cursor;
+		std::vector<int> columns;  //!< pairs: first and last column
+		std::vector<double> crossingX;
+		void fill(
+			const std::vector<double>& polygon, const GridGeometry& grid,
+			int first, int last);
+	};
+
+	/** The mix for one cell, or false when it is vacuous. */
+	bool mixAt(double dx, double dy, Mass& observed) const;
+
+	const CPolarSourceGrid* m_polar = nullptr;
+	PlanarSensorPose m_sensor;
+	Box m_box;
+	bool m_fullTurn = false;
+	/** Squared reach of each sector: half a bin past its last informed bin. */
+	std::vector<double> m_reach2;
+	/** Outlines of the informed and of the uniform regions (x, y pairs), and
+	 * the world directions of their corners. */
+	std::vector<double> m_polygon, m_uniformPolygon, m_directions;
+	Mass m_uniformMass;
+	RowSpans m_spans, m_uniformSpans;
+	/** Constants of mixAt(), set by setup(). */
+	double m_invSpacing = 0, m_span = 0, m_invBin = 0, m_dir = 1,
+		   m_yawOffset = 0;
+};
+
+inline bool CPolarToCartesian::mixAt(double dx, double dy, Mass& observed) const
+{
+	const CPolarSourceGrid& polar = *m_polar;
+	const std::size_t nSectors = polar.sectorCount(), nBins = polar.binCount();
+	// The angle from the start of sector 0's span, in [0, 2 pi): m_yawOffset
+	// is in [0, 2 pi) and atan2 in [-pi, pi].
+	double angle = m_dir * (detail::fastAtan2(dy, dx) - m_yawOffset);
+	if (angle < 0.0) angle += 2 * M_PI;
+	if (angle < 0.0) angle += 2 * M_PI;
+	if (angle >= 2 * M_PI) angle -= 2 * M_PI;
+	if (angle >= m_span) return false;  // outside the field of view
+	const auto ns =
+		detail::neighbours(angle * m_invSpacing - 0.5, nSectors, m_fullTurn);
+	const double r2 = dx * dx + dy * dy;
+	if (r2 >= std::max(m_reach2[ns.lo], m_reach2[ns.hi])) return false;
+	const auto nb =
+		detail::neighbours(std::sqrt(r2) * m_invBin - 0.5, nBins, false);
+	const Mass* rows = polar.rows();
+	const Mass* rowLo = rows + ns.lo * nBins;
+	const Mass* rowHi = rows + ns.hi * nBins;
+	const Mass& a = rowLo[nb.lo];
+	const Mass& b = rowLo[nb.hi];
+	const Mass& c = rowHi[nb.lo];
+	const Mass& d = rowHi[nb.hi];
+	const double wa = (1 - ns.wHi) * (1 - nb.wHi), wb = (1 - ns.wHi) * nb.wHi,
+				 wc = ns.wHi * (1 - nb.wHi), wd = ns.wHi * nb.wHi;
+	observed = {
+		wa * a.conflict + wb * b.conflict + wc * c.conflict + wd * d.conflict,
+		wa * a.free + wb * b.free + wc * c.free + wd * d.free,
+		wa * a.occupied + wb * b.occupied + wc * c.occupied + wd * d.occupied,
+		wa * a.unknown + wb * b.unknown + wc * c.unknown + wd * d.unknown};
+	if (observed.unknown >= 1.0 - 1e-12) return false;
+	if (a.occupied > 0.0 || b.occupied > 0.0 || c.occupied > 0.0 ||
+		d.occupied > 0.0)
+	{
+		observed.unknown += observed.free;
+		observed.free = 0.0;
+	}
+	return true;
+}
+
+template <typename VisitMixed, typename VisitUniform>
+void CPolarToCartesian::forEachInformedCell(
+	const GridGeometry& grid, VisitMixed&& visitMixed,
+	VisitUniform&& visitUniform)
+{
+	if (!m_polar || m_box.empty()) return;
+	const double res = grid.resolution;
+	const int first = std::max(
+		0, static_cast<int>(std::ceil((m_box.yMin - grid.yMin) / res - 0.5)));
+	const int last = std::min(
+		grid.sizeY - 1,
+		static_cast<int>(std::floor((m_box.yMax - grid.yMin) / res - 0.5)));
+	if (first > last) return;
+	m_spans.fill(m_polygon, grid, first, last);
+	m_uniformSpans.fill(m_uniformPolygon, grid, first, last);
+
+	Mass observed;
+	for (int cy = first; cy <= last; ++cy)
+	{
+		const auto k = static_cast<std::size_t>(cy - first);
+		const double dy = grid.cellCenterY(cy) - m_sensor.y;
+		const std::size_t rowIndex = grid.index(0, cy);
+		std::size_t u = m_uniformSpans.start[k];
+		const std::size_t uEnd = m_uniformSpans.start[k + 1];
+		const auto mixed = [&](int from, int to) {
+			for (int cx = from; cx <= to; ++cx)
+				if (mixAt(grid.cellCenterX(cx) - m_sensor.x, dy, observed))
+					visitMixed(rowIndex + static_cast<std::size_t>(cx), observed);
+		};
+		for (std::size_t o = m_spans.start[k]; o < m_spans.start[k + 1]; o += 2)
+		{
+			// The informed span, cut by the uniform spans it holds.
+			int cx = m_spans.columns[o];
+			const int end = m_spans.columns[o + 1];
+			while (cx <= end)
+			{
+				while (u < uEnd && m_uniformSpans.columns[u + 1] < cx) u += 2;
+				if (u < uEnd && m_uniformSpans.columns[u] <= cx)
+				{
+					const int stop = std::min(end, m_uniformSpans.columns[u + 1]);
+					for (; cx <= stop; ++cx)
+						visitUniform(rowIndex + static_cast<std::size_t>(cx));
+				}
+				else
+				{
+					const int stop = u < uEnd
+						? std::min(end, m_uniformSpans.columns[u] - 1)
+						: end;
+					mixed(cx, stop);
+					cx = stop + 1;
+				}
+			}
+		}
+	}
+}
+
+}  // namespace mrpt_evidential

@@ -1,0 +1,241 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT. */
+
+#include <mrpt/poses/CPose3D.h>
+#include <mrpt_evidential/PolarToCartesian.h>
+
+namespace mrpt_evidential
+{
+std::optional<PlanarSensorPose> planarSensorPose(
+	const mrpt::poses::CPose3D& sensor, double tolerance)
+{
+	// Planar when the sensor's x and y axes both lie within `tolerance` of
+	// the horizontal plane; a negative determinant of their horizontal parts
+	// means the sensor is upside down.
+	const auto& R = sensor.getRotationMatrix();
+	const double maxTilt = std::sin(tolerance) + 1e-9;
+	if (std::abs(R(2, 0)) > maxTilt || std::abs(R(2, 1)) > maxTilt)
+		return std::nullopt;
+	return PlanarSensorPose{
+		sensor.x(), sensor.y(), std::atan2(R(1, 0), R(0, 0)),
+		R(0, 0) * R(1, 1) - R(0, 1) * R(1, 0) < 0.0};
+}
+
+namespace
+{
+/** Builds the outline of a region made of one radius per gap between sector
+ * centres (and per half sector at the ends of a scan that is not a full
+ * turn): radiusOf(lo, hi) for the gap between sectors lo and hi. Arcs become
+ * chords of at most 22.5 degrees, inside the arc or pushed out far enough to
+ * hold it (`outside`); a radius of 0 puts the sensor itself in the outline.
+ * `directions` holds the world unit vectors of the gaps' ends (x, y pairs):
+ * the start of sector 0's span, every centre, the end of the last span. */
+template <typename RadiusOf>
+void outline(
+	std::vector<double>& polygon, Box* box, const CPolarSourceGrid& polar,
+	const PlanarSensorPose& sensor, const std::vector<double>& directions,
+	bool outside, RadiusOf radiusOf)
+{
+	polygon.clear();
+	const auto addPoint = [&](double x, double y) {
+		polygon.push_back(x);
+		polygon.push_back(y);
+		if (box) box->add(x, y);
+	};
+	const double dir = sensor.mirrored ? -1.0 : 1.0;
+	// The arc between direction entries i and i + 1, `width` radians wide.
+	const auto addArc = [&](double radius, std::size_t i, double width) {
+		if (radius <= 0.0)
+		{
+			addPoint(sensor.x, sensor.y);
+			return;
+		}
+		const int pieces =
+			std::max(1, static_cast<int>(std::ceil(width / (M_PI / 8))));
+		const double step = width / pieces;
+		const double rho = outside ? radius / std::cos(0.5 * step) : radius;
+		const double cx = directions[2 * i], cy = directions[2 * i + 1];
+		addPoint(sensor.x + rho * cx, sensor.y + rho * cy);
+		for (int j = 1; j < pieces; ++j)
+		{
+			// Wide sectors only: turn the start direction by j steps.
+			const double c = std::cos(dir * j * step), s = std::sin(dir * j * step);
+			addPoint(
+				sensor.x + rho * (c * cx - s * cy), sensor.y + rho * (s * cx + c * cy));
+		}
+		addPoint(
+			sensor.x + rho * directions[2 * i + 2],
+			sensor.y + rho * directions[2 * i + 3]);
+	};
+	const std::size_t n = polar.sectorCount();
+	const double spacing = polar.sectorSpacing();
+	if (!polar.fullTurn())
+	{
+		addPoint(sensor.x, sensor.y);
+		addArc(radiusOf(0, 0), 0, 0.5 * spacing);
+	}
+	for (std::size_t s = 0; s + 1 < n; ++s)
+		addArc(radiusOf(s, s + 1), s + 1, spacing);
+	if (polar.fullTurn())
+		addArc(radiusOf(n - 1, 0), n, spacing);
+	else
+		addArc(radiusOf(n - 1, n - 1), n, 0.5 * spacing);
+}
+}  // namespace
+
+void CPolarToCartesian::setup(
+	const CPolarSourceGrid& polar, const PlanarSensorPose& sensor)
+{
+	m_polar = &polar;
+	m_sensor = sensor;
+	m_box = Box{};
+	m_polygon.clear();
+	m_uniformPolygon.clear();
+	const std::size_t n = polar.sectorCount();
+	if (n == 0 || polar.maxInformedBins() == 0) return;
+
+	const double bin = polar.binSize(), spacing = polar.sectorSpacing();
+	m_fullTurn = polar.fullTurn();
+	m_invSpacing = 1.0 / spacing;
+	m_span = static_cast<double>(n) * spacing;
+	m_invBin = 1.0 / bin;
+	m_dir = sensor.mirrored ? -1.0 : 1.0;
+	const double spanStart = polar.firstSectorAngle() - 0.5 * spacing;
+	m_yawOffset = std::fmod(sensor.yaw + m_dir * spanStart, 2 * M_PI);
+	if (m_yawOffset < 0.0) m_yawOffset += 2 * M_PI;
+
+	// World directions of the outline's corners: the start of sector 0's
+	// span, each centre (by turning the first one, no sin/cos per sector),
+	// and the end of the last span (for a full turn, centre 0 again).
+	m_directions.resize(2 * (n + 2));
+	const auto setDirection = [&](std::size_t i, double sensorAngle) {
+		const double world = sensor.yaw + m_dir * sensorAngle;
+		m_directions[2 * i] = std::cos(world);
+		m_directions[2 * i + 1] = std::sin(world);
+	};
+	setDirection(0, polar.firstSectorAngle() - 0.5 * spacing);
+	setDirection(1, polar.firstSectorAngle());
+	const double turnC = std::cos(m_dir * spacing), turnS = std::sin(m_dir * spacing);
+	for (std::size_t i = 2; i <= n; ++i)
+	{
+		const double px = m_directions[2 * i - 2], py = m_directions[2 * i - 1];
+		m_directions[2 * i] = turnC * px - turnS * py;
+		m_directions[2 * i + 1] = turnS * px + turnC * py;
+	}
+	if (m_fullTurn)
+		setDirection(n + 1, polar.firstSectorAngle());
+	else
+		setDirection(n + 1, polar.sectorAngle(n - 1) + 0.5 * spacing);
+
+	m_reach2.resize(n);
+	for (std::size_t s = 0; s < n; ++s)
+	{
+		const double reach = polar.informedBins(s) == 0
+			? 0.0
+			: (static_cast<double>(polar.informedBins(s)) + 0.5) * bin;
+		m_reach2[s] = reach * reach;
+	}
+	// Between two sector centres the mix reaches as far as the longer
+	// sector; before the first and after the last centre, the sector alone.
+	outline(
+		m_polygon, &m_box, polar, sensor, m_directions, true,
+		[&](std::size_t lo, std::size_t hi) {
+			return std::sqrt(std::max(m_reach2[lo], m_reach2[hi]));
+		});
+
+	// The uniform region: the free mass most sectors start with, where both
+	// sectors around a gap hold it in the two bins around every centre.
+	std::vector<std::pair<double, std::size_t>> votes;
+	for (std::size_t s = 0; s < n; ++s)
+	{
+		if (polar.freeBins(s) == 0) continue;
+		const double w = polar.sectorRow(s)[0].free;
+		auto it = std::find_if(votes.begin(), votes.end(), [w](const auto& v) {
+			return v.first == w;
+		});
+		if (it == votes.end())
+			votes.emplace_back(w, 1);
+		else
+			++it->second;
+	}
+	const auto best = std::max_element(
+		votes.begin(), votes.end(),
+		[](const auto& a, const auto& b) { return a.second < b.second; });
+	if (best == votes.end() || best->first <= 0.0) return;
+	const double w = best->first;
+	m_uniformMass = Mass::simpleFree(w);
+	const auto uniformBins = [&](std::size_t s) {
+		return polar.freeBins(s) > 0 && polar.sectorRow(s)[0].free == w
+			? polar.freeBins(s)
+			: 0;
+	};
+	outline(
+		m_uniformPolygon, nullptr, polar, sensor, m_directions, false,
+		[&](std::size_t lo, std::size_t hi) {
+			const std::size_t bins = std::min(uniformBins(lo), uniformBins(hi));
+			return bins == 0 ? 0.0 : (static_cast<double>(bins) - 0.5) * bin;
+		});
+}
+
+void CPolarToCartesian::RowSpans::fill(
+	const std::vector<double>& polygon, const GridGeometry& grid, int first,
+	int last)
+{
+	const double res = grid.resolution;
+	const std::size_t nRows = static_cast<std::size_t>(last - first + 1);
+	// Each edge crosses the centre lines y in [lower end, upper end): a vertex
+	// is counted once, so every row holds an even number of crossings.
+	const std::size_t nPoints = polygon.size() / 2;
+	const auto forEachCrossing = [&](auto&& f) {
+		for (std::size_t i = 0; i < nPoints; ++i)
+		{
+			const std::size_t j = (i + 1) % nPoints;
+			const double x0 = polygon[2 * i], y0 = polygon[2 * i + 1];
+			const double x1 = polygon[2 * j], y1 = polygon[2 * j + 1];
+			if (y0 == y1) continue;
+			const double lo = std::min(y0, y1), hi = std::max(y0, y1);
+			const int r0 = std::max(
+				first, static_cast<int>(std::ceil((lo - grid.yMin) / res - 0.5)));
+			const int r1 = std::min(
+				last, static_cast<int>(std::ceil((hi - grid.yMin) / res - 0.5)) - 1);
+			const double slope = (x1 - x0) / (y1 - y0);
+			for (int r = r0; r <= r1; ++r)
+				f(static_cast<std::size_t>(r - first),
+				  x0 + (grid.cellCenterY(r) - y0) * slope);
+		}
+	};
+	start.assign(nRows + 1, 0);
+	forEachCrossing([&](std::size_t row, double) { ++start[row + 1]; });
+	for (std::size_t k = 0; k < nRows; ++k) start[k + 1] += start[k];
+	std::vector<double>& xs = crossingX;
+	xs.resize(start[nRows]);
+	cursor.assign(start.begin(), start.end() - 1);
+	forEachCrossing([&](std::size_t row, double x) { xs[cursor[row]++] = x; });
+
+	// Crossings to spans of columns whose centres lie between two of them;
+	// `start` is rewritten to index the spans.
+	columns.clear();
+	std::size_t from = 0;
+	for (std::size_t k = 0; k < nRows; ++k)
+	{
+		const std::size_t to = start[k + 1];
+		std::sort(
+			xs.begin() + static_cast<std::ptrdiff_t>(from),
+			xs.begin() + static_cast<std::ptrdiff_t>(to));
+		start[k] = columns.size();
+		for (std::size_t c = from; c + 1 < to; c += 2)
+		{
+			const int c0 = std::max(
+				0, static_cast<int>(std::ceil((xs[c] - grid.xMin) / res - 0.5)));
+			const int c1 = std::min(
+				grid.sizeX - 1,
+				static_cast<int>(std::floor((xs[c + 1] - grid.xMin) / res - 0.5)));
+			if (c0 > c1) continue;
+			columns.push_back(c0);
+			columns.push_back(c1);
+		}
+		from = to;
+	}
+	start[nRows] = columns.size();
+}
+
+}  // namespace mrpt_evidential

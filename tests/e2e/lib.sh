@@ -1,0 +1,92 @@
+# Helpers of the end-to-end tests (sourced by the test scripts).
+#
+# Stock MRPT programs wait for a key after an error and may open windows:
+# every one runs with stdin from /dev/null, under a timeout, its output kept
+# in a log that is printed when something fails.
+
+set -euo pipefail
+
+# The real ImageMagick, whatever else is on PATH.
+IDENTIFY=/usr/bin/identify
+
+fail() {
+	echo "FAILED: $*" >&2
+	exit 1
+}
+
+ok() {
+	echo "ok: $*"
+}
+
+# Prints a log file's last lines to stderr.
+show_log() {
+	echo "---- last lines of $1 ----" >&2
+	tail -n 40 "$1" >&2 || true
+	echo "----" >&2
+}
+
+# run_stock LOG SECONDS PRELOAD COMMAND...: runs COMMAND with the plugin
+# preloaded (PRELOAD empty: without it) and fails unless it exits with 0.
+# The preload goes to the program only, not to `timeout`.
+run_stock() {
+	local log=$1 seconds=$2 preload=$3
+	shift 3
+	local start=$SECONDS status=0
+	if [ -n "$preload" ]; then
+		timeout "$seconds" env LD_PRELOAD="$preload" "$@" </dev/null >"$log" 2>&1 || status=$?
+	else
+		timeout "$seconds" "$@" </dev/null >"$log" 2>&1 || status=$?
+	fi
+	local name
+	name=$(basename "$1")
+	if [ "$status" -ne 0 ]; then
+		show_log "$log"
+		if [ "$status" -eq 124 ]; then
+			fail "$name timed out after ${seconds}s"
+		fi
+		fail "$name exited with $status (log: $log)"
+	fi
+	ok "$name ran in $((SECONDS - start))s"
+}
+
+# The one file matching a glob pattern, or a failure.
+only_file() {
+	local matches=()
+	local f
+	for f in $1; do
+		[ -e "$f" ] && matches+=("$f")
+	done
+	[ "${#matches[@]}" -eq 1 ] || fail "expected one file matching $1, found ${#matches[@]}"
+	echo "${matches[0]}"
+}
+
+# check_evidential_files PREFIX MIN_FREE MIN_OCCUPIED: the files that
+# saveMetricMapRepresentationToFile writes for an evidential map exist, its
+# counts of free and occupied cells reach the minimums, the counts add up to
+# the grid, and every picture has one pixel per cell.
+check_evidential_files() {
+	local prefix=$1 min_free=$2 min_occupied=$3
+	local info=${prefix}_info.txt suffix
+	for suffix in _evidential.png _betp.png _conflict.png _info.txt .evgrid; do
+		[ -s "$prefix$suffix" ] || fail "missing or empty: $prefix$suffix"
+	done
+	local size counts
+	size=$(sed -n 's/^cells: \([0-9]*\) x \([0-9]*\) .*/\1 \2/p' "$info")
+	counts=$(sed -n 's/^cells by decision: free \([0-9]*\), occupied \([0-9]*\), unknown \([0-9]*\), conflict \([0-9]*\)$/\1 \2 \3 \4/p' "$info")
+	[ -n "$size" ] && [ -n "$counts" ] || fail "cannot read the geometry and counts of $info"
+	local sx sy free occupied unknown conflict
+	read -r sx sy <<<"$size"
+	read -r free occupied unknown conflict <<<"$counts"
+	echo "evidential map $sx x $sy cells: free $free, occupied $occupied, unknown $unknown, conflict $conflict"
+	[ $((free + occupied + unknown + conflict)) -eq $((sx * sy)) ] ||
+		fail "the counts of $info do not add up to $sx x $sy cells"
+	[ "$free" -ge "$min_free" ] || fail "free cells: $free < $min_free"
+	[ "$occupied" -ge "$min_occupied" ] || fail "occupied cells: $occupied < $min_occupied"
+	local picture dims
+	for suffix in _evidential.png _betp.png _conflict.png; do
+		picture=$prefix$suffix
+		dims=$("$IDENTIFY" -format '%w %h' "$picture") || fail "identify cannot read $picture"
+		[ "$dims" = "$sx $sy" ] || fail "$picture is $dims pixels, the map $sx x $sy cells"
+	done
+	ok "evidential files of $(basename "$prefix"): counts and picture sizes match"
+}

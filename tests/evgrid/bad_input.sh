@@ -1,0 +1,90 @@
+# Failures of evgrid build: truncated, damaged or foreign input, bad config,
+# an output folder that cannot be written, an interrupted run. Each exits 1
+# naming the file, and leaves the outputs of an earlier run byte for byte.
+source "$(dirname "$0")/lib.sh"
+
+out="$T/out"
+run 0 "$EVGRID" build -i "$SENA" -o "$out" --every 100
+good=$(fingerprint "$out")
+
+# expect_failure TEXT ARGS...: `evgrid build ARGS -o $out` exits 1, its error
+# contains TEXT, and the output folder is as the good run left it.
+expect_failure() {
+  local text=$1
+  shift
+  run 1 "$EVGRID" build "$@" -o "$out"
+  contains "$ERR" "evgrid build: error: $text"
+  [ "$(fingerprint "$out")" = "$good" ] || fail "the failed run changed $out"
+}
+
+# Compressed rawlog cut at several lengths: in the gzip header, inside an
+# entry near the start, in the middle, before the gzip trailer.
+size=$(stat -c %s "$SENA")
+for length in 10 20000 $((size / 2)) $((size - 4)); do
+  head -c "$length" "$SENA" >"$T/cut.rawlog"
+  expect_failure "$T/cut.rawlog: entry " -i "$T/cut.rawlog"
+  contains "$ERR" " at byte "
+  contains "$ERR" "truncated file?"
+done
+# Plain (uncompressed) rawlog cut inside an entry: the entry and its offset.
+gzip -dc "$SENA" >"$T/plain.rawlog"
+head -c 250000 "$T/plain.rawlog" >"$T/cut-plain.rawlog"
+expect_failure "$T/cut-plain.rawlog: entry 224 at byte 248416: the file ends inside this entry (truncated file?)" \
+  -i "$T/cut-plain.rawlog"
+# Damaged bytes: in an entry's class name, and in its data (a sensor pose
+# that is no longer a number).
+cp "$T/plain.rawlog" "$T/damaged-name.rawlog"
+printf '\377\377\377\377' | dd of="$T/damaged-name.rawlog" bs=1 seek=248420 conv=notrunc status=none
+expect_failure "$T/damaged-name.rawlog: entry 224 at byte 248416: an object of a class evgrid does not know (Stored object has class 'CSe????yFrame'" \
+  -i "$T/damaged-name.rawlog"
+cp "$T/plain.rawlog" "$T/damaged.rawlog"
+printf '\377\377\377\377\377\377\377\377' | dd of="$T/damaged.rawlog" bs=1 seek=248500 conv=notrunc status=none
+expect_failure "$T/damaged.rawlog: entry 224: cannot insert the scan" -i "$T/damaged.rawlog"
+# Not a rawlog at all.
+printf 'time x y phi\n0 0 0 0\n' >"$T/text.rawlog"
+expect_failure "$T/text.rawlog: entry 0 at byte 0: not a rawlog, simplemap or map saved by MRPT" -i "$T/text.rawlog"
+: >"$T/empty.rawlog"
+expect_failure "$T/empty.rawlog: the file is empty" -i "$T/empty.rawlog"
+expect_failure "$T/missing.rawlog: cannot open: No such file or directory" -i "$T/missing.rawlog"
+expect_failure "$T: is a directory" -i "$T"
+expect_failure "$out/map.evgrid: entry 0 is a mrpt_evidential::CEvidentialGridMap2D, which has no place in a rawlog" \
+  -i "$out/map.evgrid"
+
+# Config files: missing, without an evidential grid, with a bad value, or a
+# section that is not there.
+expect_failure "$T/none.ini: cannot open the config file" -i "$SENA" -c "$T/none.ini"
+printf '[MappingApplication]\noccupancyGrid_count=1\n' >"$T/no-grid.ini"
+expect_failure "$T/no-grid.ini: section [MappingApplication] creates no evidential grid" -i "$SENA" -c "$T/no-grid.ini"
+sed 's/^muF=0.7/muF=1.7/' "$EVGRID_INI" >"$T/bad-value.ini"
+expect_failure "$T/bad-value.ini: " -i "$SENA" -c "$T/bad-value.ini"
+contains "$ERR" "muF"
+expect_failure "$EVGRID_INI: no section [Elsewhere]" -i "$SENA" -c "$EVGRID_INI" -s Elsewhere
+
+# An interrupted run (SIGTERM, as `timeout` sends) cleans up and changes nothing.
+rc=0
+"$EVGRID" build -c "$EVGRID_INI" -i "$SENA" -o "$out" --animation </dev/null >"$OUT" 2>"$ERR" &
+pid=$!
+for _ in $(seq 100); do
+  [ -n "$(find "$out" -maxdepth 1 -name '.evgrid-build-*')" ] && break
+  sleep 0.05
+done
+kill -TERM "$pid"
+wait "$pid" || rc=$?
+[ "$rc" -eq 1 ] || fail "interrupted run exited $rc"
+contains "$ERR" "interrupted by signal 15; the output folder is unchanged"
+[ "$(fingerprint "$out")" = "$good" ] || fail "the interrupted run changed $out"
+
+# Output folders that cannot be written are reported before the input is
+# even opened (the input here does not exist).
+touch "$T/a-file"
+run 1 "$EVGRID" build -i "$T/missing.rawlog" -o "$T/a-file"
+contains "$ERR" "evgrid build: error: $T/a-file: the output folder cannot be written: it exists and is not a folder"
+run 1 "$EVGRID" build -i "$T/missing.rawlog" -o "$T/a-file/sub"
+contains "$ERR" "evgrid build: error: $T/a-file/sub: the output folder cannot be written"
+if [ "$(id -u)" -ne 0 ]; then  # root writes anywhere
+  mkdir "$T/read-only" && chmod 555 "$T/read-only"
+  run 1 "$EVGRID" build -i "$T/missing.rawlog" -o "$T/read-only"
+  contains "$ERR" "$T/read-only: the output folder cannot be written: Permission denied"
+  chmod 755 "$T/read-only"
+fi
+echo "evgrid_bad_input: OK"

@@ -1,0 +1,50 @@
+# evgrid build on MRPT's SENA rawlog (real SICK, odometry) with
+# rawlogs/evgrid.ini: the outputs, their sizes, plausible counts, timing, and
+# the quiet mode. The map it leaves is read by the inspect and export tests.
+source "$(dirname "$0")/lib.sh"
+
+out="$T/out"
+run 0 "$EVGRID" build -c "$EVGRID_INI" -i "$SENA" -o "$out"
+for f in map.evgrid evidential.png betp.png conflict.png summary.txt; do
+  [ -s "$out/$f" ] || fail "missing or empty: $out/$f"
+done
+[ -z "$(find "$out" -name '.evgrid-build-*')" ] || fail "temporary folder left in $out"
+
+# The closing report on stdout; progress lines on stderr (not a terminal).
+contains "$OUT" "evgrid build: 225 2-D scans: 225 inserted, 0 without a pose, 0 refused by the map"
+contains "$OUT" "scans/s"
+contains "$OUT" "time: reading "
+contains "$OUT" "pictures: $out/evidential.png, $out/betp.png, $out/conflict.png"
+contains "$ERR" "evgrid build: 100%"
+lacks "$ERR" $'\r'
+
+summary="$out/summary.txt"
+contains "$summary" "rawlog (actions/sensory frames), gzip-compressed, 449 entries"
+contains "$summary" "poses: odometry"
+contains "$summary" "config: $EVGRID_INI, section [MappingApplication]"
+contains "$summary" "resolution: 0.05 m"
+contains "$summary" "insertions: 225"
+for phase in reading insertion writing; do contains "$summary" "  $phase: "; done
+contains "$summary" "sensorModel = ReinforcedMultiEcho"
+
+# A real building: much free space, walls (occupied, or conflict where the
+# odometry's drift makes scans disagree), and no cell left uncounted.
+read -r free occupied unknown conflict <<<"$(decisions "$summary")"
+[ "$free" -gt 200000 ] || fail "only $free free cells"
+[ "$occupied" -gt 500 ] || fail "only $occupied occupied cells"
+[ "$conflict" -gt 500 ] || fail "only $conflict conflict cells"
+size=$(awk '$1 == "cells:" { print $2 * $4 }' "$summary")
+[ $((free + occupied + unknown + conflict)) -eq "$size" ] || fail "counts do not add up to $size cells"
+
+# One pixel per cell.
+cells=$(awk '$1 == "cells:" { print $2, $4 }' "$summary")
+for picture in evidential betp conflict; do
+  run 0 "$EVGRID_CHECK" image "$out/$picture.png"
+  [ "$(cat "$OUT")" = "$cells" ] || fail "$picture.png is $(cat "$OUT") pixels, the map $cells cells"
+done
+
+# --quiet: nothing on either stream, same outputs.
+run 0 "$EVGRID" build -q -i "$SENA" -o "$T/quiet"
+[ ! -s "$OUT" ] && [ ! -s "$ERR" ] || fail "--quiet printed something"
+[ -s "$T/quiet/map.evgrid" ] || fail "--quiet wrote no map"
+echo "evgrid_build_sena: OK"

@@ -1,0 +1,191 @@
+/* evgrid_check: what the evgrid tests need to look into outputs (through
+ * MRPT and OpenCV, as other programs would read them) and to prepare inputs.
+ *
+ *   evgrid_check image FILE               -> "WIDTH HEIGHT"
+ *   evgrid_check gridmap FILE             -> "SIZE_X SIZE_Y RESOLUTION" of a .gridmap
+ *   evgrid_check video FILE               -> "FRAMES WIDTH HEIGHT"
+ *   evgrid_check cells MAP                -> "free X Y" and "occupied X Y": centres
+ *                                            of the cells of largest m(F) and m(O)
+ *   evgrid_check odometry-path RAWLOG OUT -> OUT: "time x y phi" of every scan of
+ *                                            an action/sensory-frame rawlog
+ *   evgrid_check to-obs-only RAWLOG OUT   -> OUT (gzip): the same rawlog in the
+ *                                            observation-only format
+ * Exit code 0 on success, 1 with a message otherwise. */
+
+#include <mrpt/core/Clock.h>
+#include <mrpt/img/CImage.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/serialization/CArchive.h>
+#include <mrpt_evidential/CEvidentialGridMap2D.h>
+
+#include <cstdio>
+#include <functional>
+#include <iostream>
+#include <opencv2/videoio.hpp>
+#include <stdexcept>
+#include <string>
+
+using namespace mrpt::obs;
+using mrpt::poses::CPose2D;
+
+namespace
+{
+/** Calls `visit(object)` for every object of a rawlog, in order. */
+void forEachObject(
+	const std::string& path,
+	const std::function<void(const mrpt::serialization::CSerializable::Ptr&)>&
+		visit)
+{
+	mrpt::io::CFileGZInputStream in(path);
+	auto archive = mrpt::serialization::archiveFrom(in);
+	for (;;)
+	{
+		mrpt::serialization::CSerializable::Ptr object;
+		try
+		{
+			object = archive.ReadObject();
+		}
+		catch (const mrpt::serialization::CExceptionEOF&)
+		{
+			if (in.checkEOF()) return;
+			throw;
+		}
+		visit(object);
+	}
+}
+
+/** Calls `visit(odometry, frame)` for every sensory frame, with the sum of
+ * the movement increments of the actions before it. */
+void forEachFrame(
+	const std::string& path,
+	const std::function<void(const CPose2D&, const CSensoryFrame&)>& visit)
+{
+	CPose2D odometry;
+	forEachObject(path, [&](const auto& object) {
+		if (const auto actions =
+				std::dynamic_pointer_cast<CActionCollection>(object))
+		{
+			if (const auto move = actions->getBestMovementEstimation())
+				odometry = odometry + move->poseChange->getMeanVal();
+		}
+		else if (const auto frame =
+					 std::dynamic_pointer_cast<CSensoryFrame>(object))
+			visit(odometry, *frame);
+	});
+}
+
+int image(const std::string& path)
+{
+	mrpt::img::CImage img;
+	if (!img.loadFromFile(path)) throw std::runtime_error("cannot read " + path);
+	std::cout << img.getWidth() << " " << img.getHeight() << "\n";
+	return 0;
+}
+
+int gridmap(const std::string& path)
+{
+	// As pf-localization reads its map_file.
+	mrpt::maps::COccupancyGridMap2D grid;
+	mrpt::io::CFileGZInputStream in(path);
+	mrpt::serialization::archiveFrom(in) >> grid;
+	std::cout << grid.getSizeX() << " " << grid.getSizeY() << " "
+			  << grid.getResolution() << "\n";
+	return 0;
+}
+
+int video(const std::string& path)
+{
+	cv::VideoCapture capture(path, cv::CAP_OPENCV_MJPEG);
+	if (!capture.isOpened()) throw std::runtime_error("cannot read " + path);
+	int frames = 0, width = 0, height = 0;
+	for (cv::Mat frame; capture.read(frame); ++frames)
+		width = frame.cols, height = frame.rows;
+	std::cout << frames << " " << width << " " << height << "\n";
+	return 0;
+}
+
+int cells(const std::string& path)
+{
+	mrpt_evidential::CEvidentialGridMap2D map;
+	mrpt::io::CFileGZInputStream in(path);
+	mrpt::serialization::archiveFrom(in) >> map;
+	const auto& g = map.geometry();
+	double bestFree = -1, bestOccupied = -1;
+	int fx = 0, fy = 0, ox = 0, oy = 0;
+	for (int cy = 0; cy < g.sizeY; ++cy)
+		for (int cx = 0; cx < g.sizeX; ++cx)
+		{
+			const auto m = map.getCellMassesByIndex(cx, cy);
+			if (m.free > bestFree) bestFree = m.free, fx = cx, fy = cy;
+			if (m.occupied > bestOccupied)
+				bestOccupied = m.occupied, ox = cx, oy = cy;
+		}
+	std::printf(
+		"free %.17g %.17g\noccupied %.17g %.17g\n", g.cellCenterX(fx),
+		g.cellCenterY(fy), g.cellCenterX(ox), g.cellCenterY(oy));
+	return 0;
+}
+
+int odometryPath(const std::string& rawlog, const std::string& out)
+{
+	FILE* f = std::fopen(out.c_str(), "w");
+	if (!f) throw std::runtime_error("cannot write " + out);
+	std::fprintf(f, "# time x y phi: odometry at each scan of %s\n", rawlog.c_str());
+	forEachFrame(rawlog, [f](const CPose2D& odometry, const CSensoryFrame& sf) {
+		for (const auto& obs : sf)
+			if (IS_CLASS(*obs, CObservation2DRangeScan))
+				std::fprintf(
+					f, "%.6f %.17g %.17g %.17g\n",
+					mrpt::Clock::toDouble(obs->timestamp), odometry.x(),
+					odometry.y(), odometry.phi());
+	});
+	return std::fclose(f) == 0 ? 0 : 1;
+}
+
+int toObservationOnly(const std::string& rawlog, const std::string& out)
+{
+	mrpt::io::CFileGZOutputStream f(out);
+	auto archive = mrpt::serialization::archiveFrom(f);
+	forEachFrame(rawlog, [&](const CPose2D& odometry, const CSensoryFrame& sf) {
+		// A reading before each frame's observations: every scan then finds
+		// the odometry its frame had.
+		CObservationOdometry reading;
+		reading.odometry = odometry;
+		if (sf.size() > 0) reading.timestamp = sf.getObservationByIndex(0)->timestamp;
+		archive << reading;
+		for (const auto& obs : sf) archive << *obs;
+	});
+	return 0;
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+	try
+	{
+		const std::string what = argc > 1 ? argv[1] : "";
+		if (what == "image" && argc == 3) return image(argv[2]);
+		if (what == "gridmap" && argc == 3) return gridmap(argv[2]);
+		if (what == "video" && argc == 3) return video(argv[2]);
+		if (what == "cells" && argc == 3) return cells(argv[2]);
+		if (what == "odometry-path" && argc == 4)
+			return odometryPath(argv[2], argv[3]);
+		if (what == "to-obs-only" && argc == 4)
+			return toObservationOnly(argv[2], argv[3]);
+		std::cerr << "usage: see the comment at the top of evgrid_check.cpp\n";
+		return 2;
+	}
+	catch (const std::exception& e)
+	{
+		std::cerr << "evgrid_check: " << e.what() << "\n";
+		return 1;
+	}
+}

@@ -1,0 +1,53 @@
+# evgrid export of the SENA map of build_sena: pictures, a .gridmap that MRPT
+# reads back, a ROS map_server pair, and a failed export that leaves the
+# earlier files alone.
+source "$(dirname "$0")/lib.sh"
+
+built="$SCRATCH/build_sena/out"
+map="$built/map.evgrid"
+[ -s "$map" ] || fail "no map from evgrid_build_sena in $built"
+cells=$(awk '$1 == "cells:" { print $2, $4 }' "$built/summary.txt")
+
+run 0 "$EVGRID" export "$map" --png "$T/png" --gridmap "$T/grid/sena.gridmap" --ros "$T/ros/sena"
+for f in png/evidential.png png/betp.png png/conflict.png grid/sena.gridmap ros/sena.pgm ros/sena.yaml; do
+  [ -s "$T/$f" ] || fail "missing or empty: $T/$f"
+  contains "$OUT" "wrote $T/$f"
+done
+[ -z "$(find "$T" -name '.*.tmp-*')" ] || fail "temporary files left in $T"
+
+# The pictures are those of the build.
+for picture in evidential betp conflict; do
+  cmp -s "$T/png/$picture.png" "$built/$picture.png" || fail "$picture.png differs from the build's"
+done
+
+# The .gridmap, read as pf-localization reads its map_file: same resolution,
+# the same cells (give or take the one MRPT adds when it snaps the bounds).
+run 0 "$EVGRID_CHECK" gridmap "$T/grid/sena.gridmap"
+read -r gx gy gres <"$OUT"
+read -r mx my <<<"$cells"
+[ "$gres" = "0.05" ] || fail "gridmap resolution $gres"
+[ $((gx - mx)) -ge 0 ] && [ $((gx - mx)) -le 1 ] && [ $((gy - my)) -ge 0 ] && [ $((gy - my)) -le 1 ] ||
+  fail "gridmap of $gx x $gy cells for a map of $mx x $my"
+
+# ROS map_server: binary PGM of the map's size, and its YAML.
+[ "$(head -c 3 "$T/ros/sena.pgm")" = "P5" ] || fail "sena.pgm is not a binary PGM"
+[ "$(sed -n 3p "$T/ros/sena.pgm")" = "$cells" ] || fail "sena.pgm is not $cells pixels"
+contains "$T/ros/sena.yaml" "image: sena.pgm"
+contains "$T/ros/sena.yaml" "resolution: 0.05"
+contains "$T/ros/sena.yaml" "origin: ["
+
+# -q lists nothing.
+run 0 "$EVGRID" export -q "$map" --gridmap "$T/quiet.gridmap"
+[ ! -s "$OUT" ] || fail "-q printed something"
+
+# A destination that cannot be written: exit 1 naming it, nothing else touched.
+before=$(fingerprint "$T/png" && fingerprint "$T/grid" && fingerprint "$T/ros")
+touch "$T/not-a-folder"
+run 1 "$EVGRID" export "$map" --gridmap "$T/not-a-folder/x.gridmap"
+contains "$ERR" "$T/not-a-folder: cannot create the folder"
+rm "$T/not-a-folder"
+after=$(fingerprint "$T/png" && fingerprint "$T/grid" && fingerprint "$T/ros")
+[ "$before" = "$after" ] || fail "a failed export changed $T"
+run 1 "$EVGRID" export "$T/missing.evgrid" --png "$T/png"
+contains "$ERR" "$T/missing.evgrid: cannot open"
+echo "evgrid_export: OK"

@@ -1,0 +1,28 @@
+# evgrid build --every and --animation: frame pictures, a readable MJPG video
+# of a fixed size, and frames/ replaced as a whole by a later run.
+source "$(dirname "$0")/lib.sh"
+
+out="$T/out"
+run 0 "$EVGRID" build -i "$SENA" -o "$out" --every 50 --animation --animation-every 10 \
+  --animation-size 320x240 --animation-fps 10
+frames=$(cd "$out/frames" && ls)
+[ "$frames" = "$(printf 'frame_%06d_evidential.png\n' 50 100 150 200)" ] ||
+  fail "frames: $frames"
+contains "$out/summary.txt" "frames: 4 pictures in frames/, one every 50 scans"
+contains "$out/summary.txt" "animation: growth.avi, 22 frames of 320 x 240 at 10 frames/s"
+
+# Frames grow with the map, and the last frame is the map at scan 200.
+run 0 "$EVGRID_CHECK" image "$out/frames/frame_000050_evidential.png"
+[ -n "$(cat "$OUT")" ] || fail "frame 50 unreadable"
+
+# The video: MJPG in AVI, read back by OpenCV, every frame of the fixed size.
+[ "$(head -c 4 "$out/growth.avi")" = "RIFF" ] || fail "growth.avi is not an AVI file"
+run 0 "$EVGRID_CHECK" video "$out/growth.avi"
+[ "$(cat "$OUT")" = "22 320 240" ] || fail "growth.avi: $(cat "$OUT") (frames width height)"
+
+# A new run with --every replaces frames/: no frame of the old run remains.
+run 0 "$EVGRID" build -i "$SENA" -o "$out" --every 100
+frames=$(cd "$out/frames" && ls)
+[ "$frames" = "$(printf 'frame_%06d_evidential.png\n' 100 200)" ] || fail "frames after the rerun: $frames"
+[ -z "$(find "$out" -name '.evgrid-build-*')" ] || fail "temporary folder left in $out"
+echo "evgrid_growth: OK"

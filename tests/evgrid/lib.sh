@@ -1,0 +1,61 @@
+# Helpers of the evgrid tests, sourced by each script. CTest gives EVGRID (the
+# program), EVGRID_CHECK (the helper), EVGRID_LIB (the library, for stock
+# programs to preload), DATASETS (MRPT's datasets), EVGRID_INI
+# (rawlogs/evgrid.ini), EVGRID_DOC (doc/evgrid.md) and SCRATCH.
+set -euo pipefail
+
+SENA="$DATASETS/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog"
+# This test's own folder, emptied first.
+T="$SCRATCH/$(basename "$0" .sh)"
+rm -rf "$T"
+mkdir -p "$T"
+OUT="$T/last.stdout"
+ERR="$T/last.stderr"
+: >"$OUT"
+: >"$ERR"
+
+fail() {
+  echo "FAIL: $*" >&2
+  echo "--- stdout of the last command:" >&2
+  cat "$OUT" >&2
+  echo "--- stderr of the last command:" >&2
+  cat "$ERR" >&2
+  exit 1
+}
+
+# run RC COMMAND...: runs COMMAND without input and with a time limit, its
+# output into $OUT and $ERR, and fails unless it exits with RC.
+run() {
+  local expected=$1 rc=0
+  shift
+  timeout 120 "$@" </dev/null >"$OUT" 2>"$ERR" || rc=$?
+  [ "$rc" -eq "$expected" ] || fail "exit code $rc instead of $expected: $*"
+}
+
+# contains FILE TEXT: FILE holds TEXT (a fixed string).
+contains() {
+  grep -qF -- "$2" "$1" || fail "$1 does not contain: $2"
+}
+
+# lacks FILE TEXT
+lacks() {
+  if grep -qF -- "$2" "$1"; then fail "$1 contains: $2"; fi
+}
+
+# count DECISION FILE: the number of cells of a decision in a summary.txt or
+# `evgrid inspect` listing ("  free   12345   4.56%").
+count() {
+  awk -v d="$1" '$1 == d && NF == 3 { print $2 }' "$2"
+}
+
+# decisions FILE: the four counts on one line.
+decisions() {
+  echo "$(count free "$1") $(count occupied "$1") $(count unknown "$1") $(count conflict "$1")"
+}
+
+# fingerprint DIR: names, sizes and checksums of everything in DIR, hidden
+# entries included, to compare a folder before and after a run.
+fingerprint() {
+  (cd "$1" && find . -print0 | sort -z | xargs -0 -r sh -c \
+    'for f; do if [ -f "$f" ]; then echo "$f $(cksum <"$f")"; else echo "$f"; fi; done' sh)
+}
