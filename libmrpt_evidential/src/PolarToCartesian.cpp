@@ -24,16 +24,20 @@ namespace
 {
 /** Builds the outline of a region made of one radius per gap between sector
  * centres (and per half sector at the ends of a scan that is not a full
- * turn): radiusOf(lo, hi) for the gap between sectors lo and hi. Arcs become
- * chords of at most 22.5 degrees, inside the arc or pushed out far enough to
- * hold it (`outside`); a radius of 0 puts the sensor itself in the outline.
- * `directions` holds the world unit vectors of the gaps' ends (x, y pairs):
- * the start of sector 0's span, every centre, the end of the last span. */
+ * turn): radiusOf(lo, hi) for the gap between sectors lo and hi. Runs of
+ * `block` gaps share one arc, at the largest of their radii for an outline
+ * that must hold the region (`outside`), the smallest for one that must stay
+ * inside it: a few hundred corners instead of one per beam keep the rows'
+ * crossings few. Arcs become chords of at most 22.5 degrees, pushed out far
+ * enough to hold the arc when `outside`; a radius of 0 puts the sensor
+ * itself in the outline. `directions` holds the world unit vectors of the
+ * gaps' ends (x, y pairs): the start of sector 0's span, every centre, the
+ * end of the last span. */
 template <typename RadiusOf>
 void outline(
 	std::vector<double>& polygon, Box* box, const CPolarSourceGrid& polar,
 	const PlanarSensorPose& sensor, const std::vector<double>& directions,
-	bool outside, RadiusOf radiusOf)
+	bool outside, std::size_t block, RadiusOf radiusOf)
 {
 	polygon.clear();
 	const auto addPoint = [&](double x, double y) {
@@ -42,8 +46,9 @@ void outline(
 		if (box) box->add(x, y);
 	};
 	const double dir = sensor.mirrored ? -1.0 : 1.0;
-	// The arc between direction entries i and i + 1, `width` radians wide.
-	const auto addArc = [&](double radius, std::size_t i, double width) {
+	// The arc from direction entry i to entry j, `width` radians wide.
+	const auto addArc = [&](double radius, std::size_t i, std::size_t j,
+							double width) {
 		if (radius <= 0.0)
 		{
 			addPoint(sensor.x, sensor.y);
@@ -55,30 +60,39 @@ void outline(
 		const double rho = outside ? radius / std::cos(0.5 * step) : radius;
 		const double cx = directions[2 * i], cy = directions[2 * i + 1];
 		addPoint(sensor.x + rho * cx, sensor.y + rho * cy);
-		for (int j = 1; j < pieces; ++j)
+		for (int k = 1; k < pieces; ++k)
 		{
-			// Wide sectors only: turn the start direction by j steps.
-			const double c = std::cos(dir * j * step), s = std::sin(dir * j * step);
+			// Wide arcs only: turn the start direction by k steps.
+			const double c = std::cos(dir * k * step), s = std::sin(dir * k * step);
 			addPoint(
 				sensor.x + rho * (c * cx - s * cy), sensor.y + rho * (s * cx + c * cy));
 		}
 		addPoint(
-			sensor.x + rho * directions[2 * i + 2],
-			sensor.y + rho * directions[2 * i + 3]);
+			sensor.x + rho * directions[2 * j], sensor.y + rho * directions[2 * j + 1]);
 	};
 	const std::size_t n = polar.sectorCount();
 	const double spacing = polar.sectorSpacing();
 	if (!polar.fullTurn())
 	{
 		addPoint(sensor.x, sensor.y);
-		addArc(radiusOf(0, 0), 0, 0.5 * spacing);
+		addArc(radiusOf(0, 0), 0, 1, 0.5 * spacing);
 	}
-	for (std::size_t s = 0; s + 1 < n; ++s)
-		addArc(radiusOf(s, s + 1), s + 1, spacing);
-	if (polar.fullTurn())
-		addArc(radiusOf(n - 1, 0), n, spacing);
-	else
-		addArc(radiusOf(n - 1, n - 1), n, 0.5 * spacing);
+	// Gap g lies between centres g and g + 1 (g + 1 wraps to 0 for the last
+	// gap of a full turn); direction entry c + 1 is centre c.
+	const std::size_t gaps = polar.fullTurn() ? n : n - 1;
+	for (std::size_t g = 0; g < gaps; g += block)
+	{
+		const std::size_t end = std::min(gaps, g + block);
+		double radius = radiusOf(g, (g + 1) % n);
+		for (std::size_t k = g + 1; k < end; ++k)
+		{
+			const double r = radiusOf(k, (k + 1) % n);
+			radius = outside ? std::max(radius, r) : std::min(radius, r);
+		}
+		addArc(radius, g + 1, end + 1, static_cast<double>(end - g) * spacing);
+	}
+	if (!polar.fullTurn())
+		addArc(radiusOf(n - 1, n - 1), n, n + 1, 0.5 * spacing);
 }
 }  // namespace
 
@@ -136,8 +150,11 @@ void CPolarToCartesian::setup(
 	}
 	// Between two sector centres the mix reaches as far as the longer
 	// sector; before the first and after the last centre, the sector alone.
+	// Outlines with a corner every 2 degrees or so.
+	const std::size_t block = std::max<std::size_t>(
+		1, static_cast<std::size_t>(2.0 * M_PI / 180.0 / spacing));
 	outline(
-		m_polygon, &m_box, polar, sensor, m_directions, true,
+		m_polygon, &m_box, polar, sensor, m_directions, true, block,
 		[&](std::size_t lo, std::size_t hi) {
 			return std::sqrt(std::max(m_reach2[lo], m_reach2[hi]));
 		});
@@ -169,7 +186,7 @@ void CPolarToCartesian::setup(
 			: 0;
 	};
 	outline(
-		m_uniformPolygon, nullptr, polar, sensor, m_directions, false,
+		m_uniformPolygon, nullptr, polar, sensor, m_directions, false, block,
 		[&](std::size_t lo, std::size_t hi) {
 			const std::size_t bins = std::min(uniformBins(lo), uniformBins(hi));
 			return bins == 0 ? 0.0 : (static_cast<double>(bins) - 0.5) * bin;
