@@ -150,7 +150,9 @@ void CPolarToCartesian::setup(
 	}
 	// Between two sector centres the mix reaches as far as the longer
 	// sector; before the first and after the last centre, the sector alone.
-	// Outlines with a corner every 2 degrees or so.
+	// The informed region's outline gets a corner every 2 degrees or so; the
+	// uniform region's keeps one per gap, as a coarse one would leave many
+	// cells of jagged scans to the slower mixed path.
 	const std::size_t block = std::max<std::size_t>(
 		1, static_cast<std::size_t>(2.0 * M_PI / 180.0 / spacing));
 	outline(
@@ -186,7 +188,7 @@ void CPolarToCartesian::setup(
 			: 0;
 	};
 	outline(
-		m_uniformPolygon, nullptr, polar, sensor, m_directions, false, block,
+		m_uniformPolygon, nullptr, polar, sensor, m_directions, false, 1,
 		[&](std::size_t lo, std::size_t hi) {
 			const std::size_t bins = std::min(uniformBins(lo), uniformBins(hi));
 			return bins == 0 ? 0.0 : (static_cast<double>(bins) - 0.5) * bin;
