@@ -139,7 +139,7 @@ TEST(MapIni, InsertionOptionsRoundTripThroughIni)
 		EXPECT_NE(a.str().find(key), std::string::npos) << key;
 }
 
-TEST(MapIni, InvalidValuesAreRejectedNamingTheKey)
+TEST(MapIni, InvalidValuesAreRejectedNamingKeyAndValue)
 {
 	const std::vector<std::pair<std::string, std::string>> bad = {
 		{"insertOpts", "muF=1.5"},
@@ -163,14 +163,34 @@ TEST(MapIni, InvalidValuesAreRejectedNamingTheKey)
 		{"creationOpts", "min_y=5\nmax_y=5"},
 		{"creationOpts", "maxCells=0"},
 		{"creationOpts", "maxCells=-3"},
+		// Values that only their own text names faithfully.
+		{"insertOpts", "muO=-1e-9"},
+		{"insertOpts", "muF=nan"},
+		{"insertOpts", "decayRate=-1e-300"},
+		{"insertOpts", "growthMargin=-2.5e-7"},
+		{"insertOpts", "maxRange=-0.0001"},
+		{"insertOpts", "horizontalTolerance=-1e-3"},
+		{"creationOpts", "resolution=-1e-12"},
+		{"creationOpts", "min_x=1e1\nmax_x=10"},
+		// Grids beyond the budget, from either side, and beyond the limits.
+		{"creationOpts", "maxCells=100"},
+		{"creationOpts", "resolution=1e-5"},
+		{"creationOpts", "resolution=1e-7"},
+		{"creationOpts", "resolution=2e6"},
+		{"creationOpts", "min_x=-2e9"},
+		{"creationOpts", "max_y=1e10"},
 	};
 	for (const auto& [section, line] : bad)
 	{
-		const std::string key = line.substr(0, line.find('='));
+		const std::string first = line.substr(0, line.find('\n'));
+		const std::string key = first.substr(0, first.find('='));
+		const std::string value = first.substr(first.find('=') + 1);
 		const std::string message = loadError(
 			"[Map]\nevidentialGrid_count=1\n[Map_evidentialGrid_00_" + section +
 			"]\n" + line + "\n");
 		EXPECT_NE(message.find(key), std::string::npos)
+			<< line << " gave: '" << message << "'";
+		EXPECT_NE(message.find("'" + value + "'"), std::string::npos)
 			<< line << " gave: '" << message << "'";
 	}
 }

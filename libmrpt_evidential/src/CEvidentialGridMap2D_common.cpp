@@ -1,13 +1,13 @@
 /* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
  * CEvidentialGridMap2D: construction, registration, options, reading cells. */
 
-#include <mrpt/core/initializer.h>
 #include <mrpt/maps/CMetricMap.h>
 #include <mrpt/maps/TMetricMapInitializer.h>
 #include <mrpt/rtti/CObject.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -25,10 +25,16 @@ IMPLEMENTS_SERIALIZABLE(CEvidentialGridMap2D, CMetricMap, mrpt_evidential)
 
 // Known to the rtti system as soon as the library is loaded, so that archives
 // (and CMultiMetricMap copies, which go through one) can create the class.
-MRPT_INITIALIZER(registerEvidentialGridClasses)
+// A C++ initializer placed after the class id above: within one file these
+// run in order. MRPT_INITIALIZER (a constructor attribute) may run before the
+// id is initialized, as it does with clang, and register an empty name.
+namespace
 {
-	mrpt::rtti::registerClass(CLASS_ID(CEvidentialGridMap2D));
-}
+const struct RegisterClasses
+{
+	RegisterClasses() { mrpt::rtti::registerClass(CLASS_ID(CEvidentialGridMap2D)); }
+} registerClasses;
+}  // namespace
 
 CEvidentialGridMap2D::TMapDefinition::TMapDefinition() = default;
 
@@ -43,17 +49,46 @@ void CEvidentialGridMap2D::TMapDefinition::loadFromConfigFile_map_specific(
 	detail::readDouble(source, section, "max_y", max_y);
 	detail::readDouble(source, section, "resolution", resolution);
 	detail::readCount(source, section, "maxCells", maxCells);
-	if (!(resolution > 0.0))
+	const auto text = [&](const std::string& key, double value) {
+		return detail::valueText(source, section, key, value);
+	};
+	if (!(resolution >= GridGeometry::kMinResolution &&
+		  resolution <= GridGeometry::kMaxResolution))
 		detail::throwBadValue(
-			section, "resolution", std::to_string(resolution), "must be > 0");
+			section, "resolution", text("resolution", resolution),
+			"must be in [1e-6, 1e6] m");
+	for (const auto& [key, value] :
+		 {std::pair("min_x", min_x), {"max_x", max_x}, {"min_y", min_y},
+		  {"max_y", max_y}})
+		if (!(std::abs(value) <= GridGeometry::kMaxCoordinate))
+			detail::throwBadValue(
+				section, key, text(key, value), "must be within 1e9 m of the origin");
 	if (!(min_x < max_x))
 		detail::throwBadValue(
-			section, "min_x", std::to_string(min_x), "must be below max_x");
+			section, "min_x", text("min_x", min_x),
+			"must be below max_x (" + text("max_x", max_x) + ")");
 	if (!(min_y < max_y))
 		detail::throwBadValue(
-			section, "min_y", std::to_string(min_y), "must be below max_y");
+			section, "min_y", text("min_y", min_y),
+			"must be below max_y (" + text("max_y", max_y) + ")");
 	if (maxCells == 0)
-		detail::throwBadValue(section, "maxCells", "0", "must be > 0");
+		detail::throwBadValue(section, "maxCells", text("maxCells", 0), "must be > 0");
+	const double cells =
+		GridGeometry::cellsToCover(max_x - min_x, resolution) *
+		GridGeometry::cellsToCover(max_y - min_y, resolution);
+	if (cells > static_cast<double>(maxCells))
+	{
+		std::string geometry;
+		for (const auto& [key, value] :
+			 {std::pair("min_x", min_x), {"max_x", max_x}, {"min_y", min_y},
+			  {"max_y", max_y}, {"resolution", resolution}})
+			geometry += std::string(geometry.empty() ? "" : ", ") + key + " = '" +
+				text(key, value) + "'";
+		detail::throwBadValue(
+			section, "maxCells", text("maxCells", static_cast<double>(maxCells)),
+			"is below the " + detail::shortestText(cells) + " cells of the grid (" +
+				geometry + ")");
+	}
 
 	insertionOpts.loadFromConfigFile(source, sectionNamePrefix + "_insertOpts");
 	likelihoodOpts.loadFromConfigFile(
@@ -75,9 +110,12 @@ mrpt::maps::CMetricMap* CEvidentialGridMap2D::internal_CreateFromMapDefinition(
 	const mrpt::maps::TMetricMapInitializer& def)
 {
 	const auto& d = dynamic_cast<const TMapDefinition&>(def);
+	// The budget first: a grid larger than the default budget may be asked
+	// for together with a larger budget.
 	auto map = std::make_unique<CEvidentialGridMap2D>(
-		d.min_x, d.max_x, d.min_y, d.max_y, d.resolution);
+		0.0, d.resolution, 0.0, d.resolution, d.resolution);
 	map->setMaxCells(d.maxCells);
+	map->setSize(d.min_x, d.max_x, d.min_y, d.max_y, d.resolution);
 	map->insertionOptions = d.insertionOpts;
 	map->likelihoodOptions = d.likelihoodOpts;
 	return map.release();
@@ -181,22 +219,70 @@ float CEvidentialGridMap2D::compute3DMatchingRatio(
 // Insertion options
 // ---------------------------------------------------------------------------
 
+namespace
+{
+/** The first invalid insertion option: its .ini key, what it must be, and
+ * its value as the .ini file gives it (angles in degrees). */
+struct InvalidOption
+{
+	std::string key, rule;
+	double value;
+};
+
+template <typename Enum>
+bool isMember(Enum value)
+{
+	std::string name;
+	return mrpt::typemeta::TEnumType<Enum>::getBimap().direct(value, name);
+}
+
+std::optional<InvalidOption> firstInvalid(
+	const CEvidentialGridMap2D::TInsertionOptions& o)
+{
+	const double toDegrees = 180.0 / M_PI;
+	const auto unit = [](double v) { return v >= 0.0 && v <= 1.0; };
+	// Written as !(valid) so that NaN fails every test.
+	if (!isMember(o.sensorModel))
+		return InvalidOption{"sensorModel", "a known model", double(o.sensorModel)};
+	if (!unit(o.muF)) return InvalidOption{"muF", "in [0, 1]", o.muF};
+	if (!unit(o.muO)) return InvalidOption{"muO", "in [0, 1]", o.muO};
+	if (!(o.imprecision >= 0.0 && std::isfinite(o.imprecision)))
+		return InvalidOption{"imprecision", "a finite number >= 0 (m)", o.imprecision};
+	if (!isMember(o.imprecisionProfile))
+		return InvalidOption{
+			"imprecisionProfile", "a known profile", double(o.imprecisionProfile)};
+	if (!(o.sectorWidth >= 0.0 && o.sectorWidth <= 2 * M_PI))
+		return InvalidOption{
+			"sectorWidth", "in [0, 360] degrees", o.sectorWidth * toDegrees};
+	if (!(o.maxRange > 0.0 && std::isfinite(o.maxRange)))
+		return InvalidOption{"maxRange", "a finite number > 0 (m)", o.maxRange};
+	if (!isMember(o.fusionRule))
+		return InvalidOption{"fusionRule", "a known rule", double(o.fusionRule)};
+	if (!(o.decayRate >= 0.0 && std::isfinite(o.decayRate)))
+		return InvalidOption{
+			"decayRate", "a finite number >= 0 (per second)", o.decayRate};
+	if (!(o.horizontalTolerance >= 0.0 && o.horizontalTolerance <= M_PI / 2))
+		return InvalidOption{
+			"horizontalTolerance", "in [0, 90] degrees",
+			o.horizontalTolerance * toDegrees};
+	if (!isMember(o.conflictHandling))
+		return InvalidOption{
+			"conflictHandling", "a known handling", double(o.conflictHandling)};
+	if (!(o.growthMargin >= 0.0 && std::isfinite(o.growthMargin)))
+		return InvalidOption{
+			"growthMargin", "a finite number >= 0 (m)", o.growthMargin};
+	return std::nullopt;
+}
+}  // namespace
+
 void CEvidentialGridMap2D::TInsertionOptions::validate() const
 {
-	const auto fail = [](const std::string& key, double v, const char* what) {
+	if (const auto bad = firstInvalid(*this))
 		throw std::invalid_argument(
-			key + " " + what + ", got " + std::to_string(v));
-	};
-	if (!(sectorWidth >= 0.0 && sectorWidth <= 2 * M_PI))
-		fail("sectorWidth", sectorWidth * 180.0 / M_PI, "must be in [0, 360] degrees");
-	sourceGridOptions(1.0).validate();  // muF, muO, imprecision, maxRange
-	if (!(decayRate >= 0.0 && std::isfinite(decayRate)))
-		fail("decayRate", decayRate, "must be a finite number >= 0 (per second)");
-	if (!(horizontalTolerance >= 0.0 && horizontalTolerance <= M_PI / 2))
-		fail("horizontalTolerance", horizontalTolerance * 180.0 / M_PI,
-			 "must be in [0, 90] degrees");
-	if (!(growthMargin >= 0.0 && std::isfinite(growthMargin)))
-		fail("growthMargin", growthMargin, "must be a finite number >= 0 (m)");
+			bad->key + " must be " + bad->rule + ", got " +
+			detail::shortestText(bad->value));
+	// What the polar grid adds (e.g. at most 1e7 range bins of 1 m).
+	sourceGridOptions(1.0).validate();
 }
 
 TSourceGridOptions CEvidentialGridMap2D::TInsertionOptions::sourceGridOptions(
@@ -233,6 +319,12 @@ void CEvidentialGridMap2D::TInsertionOptions::loadFromConfigFile(
 		source, section, "horizontalTolerance", o.horizontalTolerance);
 	detail::readEnum(source, section, "conflictHandling", o.conflictHandling);
 	detail::readDouble(source, section, "growthMargin", o.growthMargin);
+	// The value in the message is the text of the file, as the user wrote it.
+	if (const auto bad = firstInvalid(o))
+		detail::throwBadValue(
+			section, bad->key,
+			detail::valueText(source, section, bad->key, bad->value),
+			"must be " + bad->rule);
 	try
 	{
 		o.validate();

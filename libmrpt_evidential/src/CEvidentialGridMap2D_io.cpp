@@ -20,8 +20,9 @@
  *                u16 conflict, u16 free, u16 occupied, u16 stamp
  *   checksum     u64 FNV-1a (64 bit) of every byte above, header excluded
  * Enums are stored as their integer values; booleans as 0 or 1.
- * Reading refuses a grid of more cells than its stored budget or than
- * 10 x kDefaultMaxCells, before allocating anything for it. */
+ * Reading refuses a budget above 10 x kDefaultMaxCells and a grid of more
+ * cells than its budget, before allocating anything for it, and allocates
+ * the cells of a larger grid than kCellsTrustedAhead as they arrive. */
 
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
@@ -41,6 +42,9 @@ namespace
 /** Cells are streamed in blocks of this many, to bound the scratch buffer. */
 constexpr std::size_t kCellsPerBlock = 4096;
 constexpr std::size_t kBytesPerCell = 8;
+/** Cells allocated before any is read (32 MB, a 2000 x 2000 grid): beyond
+ * this, memory follows the data actually present. */
+constexpr std::size_t kCellsTrustedAhead = std::size_t(1) << 22;
 
 /** Reads exactly len bytes. CArchive::ReadBuffer throws only when it reads
  * nothing; a short read at the end of a truncated stream must throw too. */
@@ -205,7 +209,10 @@ void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 	const auto maxCells = ar.ReadAs<std::uint64_t>();
 	// Sizes are checked before anything is allocated, so that a corrupted
 	// size fails here rather than in a huge allocation.
-	if (maxCells == 0) corrupted("a cell budget of 0");
+	// The budget governs later growth: a forged one must not let a scan
+	// allocate what no grid read from a file may hold.
+	if (maxCells == 0 || maxCells > kDefaultMaxCells * 10)
+		corrupted("a cell budget of " + std::to_string(maxCells));
 	if (g.sizeX < 1 || g.sizeY < 1) corrupted("an empty grid");
 	if (g.cellCount() > maxCells || g.cellCount() > kDefaultMaxCells * 10)
 		corrupted(
@@ -241,13 +248,22 @@ void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 	const auto insertions = ar.ReadAs<std::uint64_t>();
 	const auto decayRate = ar.ReadAs<double>();
 
-	std::vector<QuantizedCell> cells(g.cellCount());
+	// The cells are allocated as they arrive, beyond a first share that
+	// typical maps fit in: a header that claims a huge grid in a short
+	// (truncated or forged) stream fails when the data runs out, having
+	// allocated at most twice what it read.
+	const std::size_t cellCount = g.cellCount();
+	std::vector<QuantizedCell> cells;
+	cells.reserve(std::min(cellCount, kCellsTrustedAhead));
 	std::vector<std::uint8_t> block(
-		std::min(cells.size(), kCellsPerBlock) * kBytesPerCell);
-	for (std::size_t first = 0; first < cells.size(); first += kCellsPerBlock)
+		std::min(cellCount, kCellsPerBlock) * kBytesPerCell);
+	for (std::size_t first = 0; first < cellCount; first += kCellsPerBlock)
 	{
-		const std::size_t n = std::min(kCellsPerBlock, cells.size() - first);
+		const std::size_t n = std::min(kCellsPerBlock, cellCount - first);
 		ar.ReadBuffer(block.data(), n * kBytesPerCell);
+		if (first + n > cells.capacity())
+			cells.reserve(std::min(cellCount, 2 * cells.capacity()));
+		cells.resize(first + n);
 		for (std::size_t i = 0; i < n; ++i)
 		{
 			const std::uint8_t* p = &block[i * kBytesPerCell];

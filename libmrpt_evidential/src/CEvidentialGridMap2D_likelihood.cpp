@@ -79,6 +79,22 @@ namespace
  * not make the field dwarf the map. Points farther outside count as far from
  * every obstacle. */
 constexpr int kMaxMarginCells = 1024;
+/** The margin is also cut so that the field holds at most 4 times the map's
+ * cells plus this many (4M cells, 20 MB): a long thin map with a wide margin
+ * would otherwise need hundreds of times its own memory. */
+constexpr double kMarginSpareCells = 4.0 * (1 << 20);
+
+/** The widest margin m <= `wanted` for which the field, (sx + 2m) (sy + 2m)
+ * cells, stays within the bound above. */
+int fieldMargin(const GridGeometry& map, double wanted)
+{
+	const double sx = map.sizeX, sy = map.sizeY;
+	// 4 m^2 + 2 b m - c <= 0 up to its positive root.
+	const double b = sx + sy, c = 3.0 * sx * sy + kMarginSpareCells;
+	const double root = (std::sqrt(b * b + 4.0 * c) - b) / 4.0;
+	return static_cast<int>(
+		std::min({wanted, double(kMaxMarginCells), std::floor(root)}));
+}
 
 /** The occupied mass with the conflict set aside, m(O) / (1 - m(empty)), as
  * Dempster's normalization (and betP) would read it; m(O) itself when the
@@ -264,8 +280,10 @@ std::shared_ptr<const CEvidentialGridMap2D::LikelihoodField>
 	const double logRandom =
 		opts.zRandom > 0.0 ? std::log(opts.zRandom / opts.maxRange) : kLogZero;
 	const double logHit = opts.zHit > 0.0 ? std::log(opts.zHit) : kLogZero;
+	// d / sigma first: d^2 and sigma^2 may each overflow (inf / inf is NaN).
 	const auto scoreOf = [&](double d) {
-		return logAddExp(logRandom, logHit - d * d / (2.0 * opts.sigma * opts.sigma));
+		const double z = d / opts.sigma;
+		return logAddExp(logRandom, logHit - 0.5 * z * z);
 	};
 	for (int c = 0; c < Field::kFarSeen; ++c) field->score[c] = scoreOf(distanceOf(c));
 	field->score[Field::kFarSeen] = scoreOf(opts.maxCorrsDistance);
@@ -276,8 +294,7 @@ std::shared_ptr<const CEvidentialGridMap2D::LikelihoodField>
 	// rounded up, and farther sites never win below the cut.
 	const double reachCells =
 		std::ceil(opts.maxCorrsDistance / map.resolution);
-	const int margin =
-		static_cast<int>(std::min<double>(reachCells, kMaxMarginCells));
+	const int margin = fieldMargin(map, reachCells);
 	GridGeometry& g = field->geometry;
 	g.resolution = map.resolution;
 	g.xMin = map.xMin - margin * map.resolution;

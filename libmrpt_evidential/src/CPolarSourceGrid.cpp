@@ -40,7 +40,8 @@ void CPolarSourceGrid::build(
 	options.validate();
 	const std::size_t nBeams = scan.getScanSize();
 	const double aperture = scan.aperture;
-	if (nBeams > 1 && !(aperture > 0.0 && aperture <= 2 * M_PI + 1e-6))
+	// A single beam's sector is as wide as the aperture, so it is checked too.
+	if (nBeams > 0 && !(aperture > 0.0 && aperture <= 2 * M_PI + 1e-6))
 		throw std::invalid_argument(
 			"scan aperture must be in (0, 2 pi] rad, got " +
 			std::to_string(aperture));

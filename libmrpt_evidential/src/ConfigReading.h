@@ -37,6 +37,23 @@ inline std::string readWord(
 	return source.read_string_first_word(section, key, "", false);
 }
 
+/** The shortest text that reads back as exactly `value`. */
+inline std::string shortestText(double value)
+{
+	char text[40];
+	return std::string(text, std::to_chars(text, text + sizeof(text), value).ptr);
+}
+
+/** A key's value for a message: as the file writes it, or `value` when the
+ * file does not give the key. */
+inline std::string valueText(
+	const mrpt::config::CConfigFileBase& source, const std::string& section,
+	const std::string& key, double value)
+{
+	const std::string word = readWord(source, section, key);
+	return word.empty() ? shortestText(value) : word;
+}
+
 /** Reads a number into `value` when the key is present.
  * \throws std::invalid_argument if the text is not a finite number. */
 inline void readDouble(
@@ -131,10 +148,7 @@ inline void writeValue(
 	mrpt::config::CConfigFileBase& target, const std::string& section,
 	const std::string& key, double value, const std::string& comment)
 {
-	// The shortest text that reads back as exactly the same value.
-	char text[40];
-	const auto end = std::to_chars(text, text + sizeof(text), value).ptr;
-	target.write(section, key, std::string(text, end), -1, -1, comment);
+	target.write(section, key, shortestText(value), -1, -1, comment);
 }
 inline void writeValue(
 	mrpt::config::CConfigFileBase& target, const std::string& section,

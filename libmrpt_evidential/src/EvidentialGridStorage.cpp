@@ -3,6 +3,7 @@
 #include <mrpt_evidential/EvidentialGridStorage.h>
 
 #include <algorithm>
+#include <charconv>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -14,10 +15,12 @@ namespace
 /** Above this exponent the gains are rebased, long before exp() overflows. */
 constexpr double kMaxGainExponent = 200.0;
 
-/** Number of cells needed to cover a length, at least 1. */
-double cellsFor(double length, double resolution)
+/** The shortest text that reads back as v: std::to_string would print 1e-7
+ * as 0.000000. */
+std::string text(double v)
 {
-	return std::max(1.0, std::ceil(length / resolution - 1e-9));
+	char buf[32];
+	return std::string(buf, std::to_chars(buf, buf + sizeof(buf), v).ptr);
 }
 }  // namespace
 
@@ -25,24 +28,23 @@ void EvidentialGridStorage::reset(
 	double xMin, double xMax, double yMin, double yMax, double resolution,
 	std::size_t maxCells)
 {
-	if (!(resolution > 0.0 && std::isfinite(resolution)))
+	if (!(resolution >= GridGeometry::kMinResolution &&
+		  resolution <= GridGeometry::kMaxResolution))
 		throw std::invalid_argument(
-			"resolution must be a positive finite number, got " +
-			std::to_string(resolution));
-	for (const double v : {xMin, xMax, yMin, yMax})
-		if (!std::isfinite(v))
-			throw std::invalid_argument("grid bounds must be finite numbers");
+			"resolution must be in [1e-6, 1e6] m, got " + text(resolution));
+	if (!GridGeometry::withinLimits(xMin, xMax, yMin, yMax, resolution))
+		throw std::invalid_argument(
+			"grid bounds must be numbers within 1e9 m of the origin");
 	if (!(xMin < xMax) || !(yMin < yMax))
 		throw std::invalid_argument(
-			"grid bounds need min < max, got x [" + std::to_string(xMin) + ", " +
-			std::to_string(xMax) + "] y [" + std::to_string(yMin) + ", " +
-			std::to_string(yMax) + "]");
-	const double sx = cellsFor(xMax - xMin, resolution);
-	const double sy = cellsFor(yMax - yMin, resolution);
+			"grid bounds need min < max, got x [" + text(xMin) + ", " + text(xMax) +
+			"] y [" + text(yMin) + ", " + text(yMax) + "]");
+	const double sx = GridGeometry::cellsToCover(xMax - xMin, resolution);
+	const double sy = GridGeometry::cellsToCover(yMax - yMin, resolution);
 	if (sx * sy > static_cast<double>(maxCells) ||
 		std::max(sx, sy) > std::numeric_limits<int>::max())
 		throw std::invalid_argument(
-			"a grid of " + std::to_string(sx) + " x " + std::to_string(sy) +
+			"a grid of " + text(sx) + " x " + text(sy) +
 			" cells exceeds the budget of " + std::to_string(maxCells) +
 			" cells");
 	m_geometry = {xMin, yMin, resolution, static_cast<int>(sx), static_cast<int>(sy)};
@@ -66,10 +68,13 @@ bool EvidentialGridStorage::growToInclude(
 	const bool growDown = yMin < g.yMin, growUp = yMax > g.yMax();
 	if (!growLeft && !growRight && !growDown && !growUp) return true;
 
-	const double addLeft = growLeft ? cellsFor(g.xMin - xMin + margin, res) : 0;
-	const double addRight = growRight ? cellsFor(xMax - g.xMax() + margin, res) : 0;
-	const double addDown = growDown ? cellsFor(g.yMin - yMin + margin, res) : 0;
-	const double addUp = growUp ? cellsFor(yMax - g.yMax() + margin, res) : 0;
+	const auto cellsFor = [res](double length) {
+		return GridGeometry::cellsToCover(length, res);
+	};
+	const double addLeft = growLeft ? cellsFor(g.xMin - xMin + margin) : 0;
+	const double addRight = growRight ? cellsFor(xMax - g.xMax() + margin) : 0;
+	const double addDown = growDown ? cellsFor(g.yMin - yMin + margin) : 0;
+	const double addUp = growUp ? cellsFor(yMax - g.yMax() + margin) : 0;
 	const double sx = g.sizeX + addLeft + addRight;
 	const double sy = g.sizeY + addDown + addUp;
 	if (sx * sy > static_cast<double>(maxCells) ||
@@ -79,6 +84,9 @@ bool EvidentialGridStorage::growToInclude(
 	GridGeometry grown{
 		g.xMin - addLeft * res, g.yMin - addDown * res, res, static_cast<int>(sx),
 		static_cast<int>(sy)};
+	if (!GridGeometry::withinLimits(
+			grown.xMin, grown.xMax(), grown.yMin, grown.yMax(), res))
+		return false;
 	// New cells are vacuous: their stamp does not matter, vacuous never decays.
 	std::vector<QuantizedCell> cells(grown.cellCount(), QuantizedCell{});
 	const int dx = static_cast<int>(addLeft), dy = static_cast<int>(addDown);
@@ -97,11 +105,11 @@ void EvidentialGridStorage::setDecayRate(double perSecond)
 	if (!(perSecond >= 0.0 && std::isfinite(perSecond)))
 		throw std::invalid_argument(
 			"decay rate must be a finite number >= 0, got " +
-			std::to_string(perSecond));
+			text(perSecond));
 	if (perSecond == m_decayRate) return;
 	// Cells decay under the old rate up to now, under the new one from now
 	// on; before the first insertion there is nothing to decay.
-	if (m_insertions > 0) rebaseStamps();
+	if (m_insertions > 0) rebaseStamps(latestTime());
 	m_decayRate = perSecond;
 	updateGains();
 }
@@ -120,7 +128,12 @@ void EvidentialGridStorage::beginInsertion(double t)
 	if (t <= latestTime()) return;  // same stamp: nothing decays
 	if (m_stampTimes.size() >= kMaxStamps ||
 		m_decayRate * (t - m_stampTimes.front()) > kMaxGainExponent)
-		rebaseStamps();
+	{
+		// Rebased to t itself: the step from the latest time alone may be
+		// too long for the gains (exp overflows, and 0 * inf reads as NaN).
+		rebaseStamps(t);
+		return;
+	}
 	const double sinceOrigin = t - m_stampTimes.front();
 	m_stampTimes.push_back(t);
 	m_stampGain.push_back(std::exp(m_decayRate * sinceOrigin));
@@ -128,14 +141,20 @@ void EvidentialGridStorage::beginInsertion(double t)
 	m_currentStamp = static_cast<std::uint16_t>(m_stampTimes.size() - 1);
 }
 
-void EvidentialGridStorage::rebaseStamps()
+void EvidentialGridStorage::rebaseStamps(double to)
 {
 	if (m_decayRate > 0.0)
+	{
+		// Each stamp's factor straight from its time, never from the gains:
+		// this also serves steps too long for them.
+		std::vector<double> factor(m_stampTimes.size());
+		for (std::size_t s = 0; s < factor.size(); ++s)
+			factor[s] = std::exp(-m_decayRate * (to - m_stampTimes[s]));
 		for (QuantizedCell& c : m_cells)
-			if (c.stamp != m_currentStamp)
-				encodeMass(decayed(c, decayFactor(c.stamp)), c);
+			if (factor[c.stamp] < 1.0) encodeMass(decayed(c, factor[c.stamp]), c);
+	}
 	for (QuantizedCell& c : m_cells) c.stamp = 0;
-	m_stampTimes.assign(1, latestTime());
+	m_stampTimes.assign(1, to);
 	m_currentStamp = 0;
 	updateGains();
 }
@@ -153,15 +172,19 @@ void EvidentialGridStorage::assign(
 	const GridGeometry& geometry, std::vector<QuantizedCell> cells,
 	std::vector<double> stampTimes, std::size_t insertions, double decayRate)
 {
-	if (!(geometry.resolution > 0.0 && std::isfinite(geometry.resolution)) ||
-		!std::isfinite(geometry.xMin) || !std::isfinite(geometry.yMin) ||
-		geometry.sizeX < 0 || geometry.sizeY < 0)
+	if (geometry.sizeX < 0 || geometry.sizeY < 0 ||
+		!GridGeometry::withinLimits(
+			geometry.xMin, geometry.xMax(), geometry.yMin, geometry.yMax(),
+			geometry.resolution))
 		throw std::invalid_argument("invalid grid geometry");
 	if (cells.size() != geometry.cellCount())
 		throw std::invalid_argument(
 			"cell count " + std::to_string(cells.size()) +
 			" does not match the geometry");
-	if (stampTimes.empty() || stampTimes.size() > kMaxStamps)
+	// Before the first insertion there is one time: the first insertion
+	// starts the table again, and must not leave a cell with a later stamp.
+	if (stampTimes.empty() || stampTimes.size() > kMaxStamps ||
+		(insertions == 0 && stampTimes.size() != 1))
 		throw std::invalid_argument("invalid number of insertion times");
 	for (std::size_t i = 0; i < stampTimes.size(); ++i)
 		if (!std::isfinite(stampTimes[i]) ||

@@ -153,8 +153,9 @@ void CPolarToCartesian::setup(
 	// The informed region's outline gets a corner every 2 degrees or so; the
 	// uniform region's keeps one per gap, as a coarse one would leave many
 	// cells of jagged scans to the slower mixed path.
-	const std::size_t block = std::max<std::size_t>(
-		1, static_cast<std::size_t>(2.0 * M_PI / 180.0 / spacing));
+	// Compared as doubles: the sectors of a tiny aperture are tinier still.
+	const auto block = static_cast<std::size_t>(std::clamp(
+		std::floor(2.0 * M_PI / 180.0 / spacing), 1.0, static_cast<double>(n)));
 	outline(
 		m_polygon, &m_box, polar, sensor, m_directions, true, block,
 		[&](std::size_t lo, std::size_t hi) {
@@ -212,10 +213,10 @@ void CPolarToCartesian::RowSpans::fill(
 			const double x1 = polygon[2 * j], y1 = polygon[2 * j + 1];
 			if (y0 == y1) continue;
 			const double lo = std::min(y0, y1), hi = std::max(y0, y1);
-			const int r0 = std::max(
-				first, static_cast<int>(std::ceil((lo - grid.yMin) / res - 0.5)));
-			const int r1 = std::min(
-				last, static_cast<int>(std::ceil((hi - grid.yMin) / res - 0.5)) - 1);
+			const int r0 = detail::clampToInt(
+				std::ceil((lo - grid.yMin) / res - 0.5), first, last + 1);
+			const int r1 =
+				detail::clampToInt(std::ceil((hi - grid.yMin) / res - 0.5), first, last + 1) - 1;
 			const double slope = (x1 - x0) / (y1 - y0);
 			for (int r = r0; r <= r1; ++r)
 				f(static_cast<std::size_t>(r - first),
@@ -243,11 +244,10 @@ void CPolarToCartesian::RowSpans::fill(
 		start[k] = columns.size();
 		for (std::size_t c = from; c + 1 < to; c += 2)
 		{
-			const int c0 = std::max(
-				0, static_cast<int>(std::ceil((xs[c] - grid.xMin) / res - 0.5)));
-			const int c1 = std::min(
-				grid.sizeX - 1,
-				static_cast<int>(std::floor((xs[c + 1] - grid.xMin) / res - 0.5)));
+			const int c0 = detail::clampToInt(
+				std::ceil((xs[c] - grid.xMin) / res - 0.5), 0, grid.sizeX);
+			const int c1 = detail::clampToInt(
+				std::floor((xs[c + 1] - grid.xMin) / res - 0.5), -1, grid.sizeX - 1);
 			if (c0 > c1) continue;
 			columns.push_back(c0);
 			columns.push_back(c1);

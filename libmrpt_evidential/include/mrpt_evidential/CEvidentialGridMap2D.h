@@ -93,10 +93,21 @@ enum class ConflictHandling
  * Cells are 8 bytes: three masses in 16-bit fixed point (a stored mass is
  * within 1/131070 of the exact one) and a time stamp (EvidentialGridStorage).
  *
- * Threads: const methods (reading cells, pictures, likelihood, whose cache is
- * built under a lock) may run concurrently from several threads as long as no
- * thread modifies the map (insertion, clear, setSize, options changes,
- * deserialization) at the same time. */
+ * Threads:
+ * - Const methods may run from any number of threads at once on the same
+ *   map: reading cells (getCellMasses*, getCellBetP, getCellDecision,
+ *   countDecisions, storage()), pictures and conversions (getAs*,
+ *   getOccupiedCellCenters, saveAsROSMap and saveMetricMapRepresentationToFile
+ *   to different files), asString, serialization into different archives,
+ *   copies, and computeObservationLikelihood, whose likelihood field the
+ *   first caller builds under a lock while the others wait for it.
+ * - Nothing may change the map meanwhile: insertion, clear, setSize,
+ *   setMaxCells, deserialization and assigning to insertionOptions,
+ *   likelihoodOptions or genericMapParams need the map to themselves.
+ * - Distinct maps share nothing and may be used from different threads
+ *   freely.
+ * tests/test_threads.cpp checks the first rule under ThreadSanitizer
+ * (doc/reliability.md). */
 class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 {
 	DEFINE_SERIALIZABLE(CEvidentialGridMap2D, mrpt_evidential)
@@ -113,8 +124,9 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 		double max_y = 10.0, double resolution = 0.10);
 
 	/** Discards every cell and sets a new geometry (the cell budget stays).
-	 * \throws std::invalid_argument if resolution <= 0, min >= max, a bound is
-	 *  not finite, or the grid would exceed maxCells(). */
+	 * \throws std::invalid_argument if the resolution is not in [1e-6, 1e6]
+	 *  m, a bound is not within 1e9 m of the origin, min >= max, or the grid
+	 *  would exceed maxCells(). */
 	void setSize(
 		double min_x, double max_x, double min_y, double max_y,
 		double resolution);
@@ -344,8 +356,9 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 
 	MAP_DEFINITION_START(CEvidentialGridMap2D)
 	/** `[<prefix>_evidentialGrid_NN_creationOpts]`: min_x, max_x, min_y,
-	 * max_y (metres, min < max), resolution (metres, > 0) and maxCells
-	 * (cell budget for growth, > 0). */
+	 * max_y (metres, min < max, within 1e9 m of the origin), resolution
+	 * (metres, 1e-6 to 1e6) and maxCells (cell budget for growth, > 0, at
+	 * least the cells of the initial grid). */
 	double min_x = -10.0, max_x = 10.0, min_y = -10.0, max_y = 10.0,
 		   resolution = 0.10;
 	std::size_t maxCells = CEvidentialGridMap2D::kDefaultMaxCells;

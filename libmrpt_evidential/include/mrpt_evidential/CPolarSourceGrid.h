@@ -53,8 +53,8 @@ class CPolarSourceGrid
 {
    public:
 	/** Rebuilds the grid from a scan, reusing the storage.
-	 * \throws std::invalid_argument if the options are invalid, or the scan's
-	 *  aperture is not in (0, 2 pi] while it has more than one beam. */
+	 * \throws std::invalid_argument if the options are invalid, or the scan
+	 *  has beams and its aperture is not in (0, 2 pi]. */
 	void build(
 		const mrpt::obs::CObservation2DRangeScan& scan,
 		const TSourceGridOptions& options);

@@ -6,9 +6,11 @@
 #include <mrpt_evidential/Mass.h>
 #include <mrpt_evidential/QuantizedMass.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace mrpt_evidential
@@ -20,20 +22,50 @@ struct GridGeometry
 	double xMin = 0.0, yMin = 0.0, resolution = 0.1;
 	int sizeX = 0, sizeY = 0;
 
+	/** Limits of every grid: bounds within kMaxCoordinate metres of the
+	 * origin, cells of kMinResolution to kMaxResolution metres. Beyond them
+	 * cell centres lose their precision, and squared distances overflow. */
+	static constexpr double kMaxCoordinate = 1e9;
+	static constexpr double kMinResolution = 1e-6, kMaxResolution = 1e6;
+	/** True when the bounds and resolution are within the limits (NaN is
+	 * not). */
+	static bool withinLimits(
+		double xMin, double xMax, double yMin, double yMax, double resolution)
+	{
+		const auto near = [](double v) {
+			return v >= -kMaxCoordinate && v <= kMaxCoordinate;
+		};
+		return resolution >= kMinResolution && resolution <= kMaxResolution &&
+			near(xMin) && near(xMax) && near(yMin) && near(yMax);
+	}
+
+	/** Number of cells needed to cover `length` metres, at least 1 (a
+	 * length within a billionth of a cell above a whole number of cells
+	 * needs that number). */
+	static double cellsToCover(double length, double resolution)
+	{
+		return std::max(1.0, std::ceil(length / resolution - 1e-9));
+	}
+
 	double xMax() const { return xMin + sizeX * resolution; }
 	double yMax() const { return yMin + sizeY * resolution; }
 	std::size_t cellCount() const
 	{
 		return static_cast<std::size_t>(sizeX) * static_cast<std::size_t>(sizeY);
 	}
-	/** Column of x; may be outside [0, sizeX). */
-	int cellX(double x) const
+	/** Column of x; may be outside [0, sizeX) (far away or NaN: an int's
+	 * smallest or largest value). */
+	int cellX(double x) const { return floorToInt((x - xMin) / resolution); }
+	int cellY(double y) const { return floorToInt((y - yMin) / resolution); }
+	/** floor(v), saturated to an int: a plain cast of a larger value is
+	 * undefined behaviour. NaN gives the smallest int. */
+	static int floorToInt(double v)
 	{
-		return static_cast<int>(std::floor((x - xMin) / resolution));
-	}
-	int cellY(double y) const
-	{
-		return static_cast<int>(std::floor((y - yMin) / resolution));
+		constexpr double lo = std::numeric_limits<int>::min();
+		constexpr double hi = std::numeric_limits<int>::max();
+		const double f = std::floor(v);
+		if (f >= hi) return std::numeric_limits<int>::max();
+		return f >= lo ? static_cast<int>(f) : std::numeric_limits<int>::min();
 	}
 	double cellCenterX(int cx) const { return xMin + (cx + 0.5) * resolution; }
 	double cellCenterY(int cy) const { return yMin + (cy + 0.5) * resolution; }
@@ -70,8 +102,9 @@ class EvidentialGridStorage
 	/** Discards every cell and sets the geometry to cover [xMin, xMax] x
 	 * [yMin, yMax] with square cells of `resolution` metres, all vacuous.
 	 * Insertion times start again.
-	 * \throws std::invalid_argument if resolution <= 0, a bound is not
-	 *  finite, min >= max, or the grid would exceed `maxCells` cells. */
+	 * \throws std::invalid_argument if the resolution or a bound is beyond
+	 *  GridGeometry's limits (NaN included), min >= max, or the grid would
+	 *  exceed `maxCells` cells. */
 	void reset(
 		double xMin, double xMax, double yMin, double yMax, double resolution,
 		std::size_t maxCells);
@@ -82,7 +115,8 @@ class EvidentialGridStorage
 	 * `margin` metres beyond each side that has to grow, keeping every cell
 	 * where it is. Does nothing when the box is already covered.
 	 * \return false (and leaves the grid as it is) if the grown grid would
-	 *  exceed `maxCells` cells or a bound is not finite. */
+	 *  exceed `maxCells` cells or GridGeometry's limits, or a bound is not
+	 *  finite. */
 	bool growToInclude(
 		double xMin, double xMax, double yMin, double yMax, double margin,
 		std::size_t maxCells);
@@ -141,16 +175,19 @@ class EvidentialGridStorage
 	std::uint16_t currentStamp() const { return m_currentStamp; }
 
 	/** Replaces the whole state with one read from a file.
-	 * \throws std::invalid_argument if the pieces do not fit together (cell
-	 *  count against geometry, a stamp without a time, masses above 1,
-	 *  times that go backwards). */
+	 * \throws std::invalid_argument if the pieces do not fit together (a
+	 *  geometry beyond the limits, cell count against geometry, a stamp
+	 *  without a time, masses above 1, times that go backwards, several
+	 *  times but no insertion). */
 	void assign(
 		const GridGeometry& geometry, std::vector<QuantizedCell> cells,
 		std::vector<double> stampTimes, std::size_t insertions,
 		double decayRate);
 
    private:
-	void rebaseStamps();
+	/** Decays every cell to time `to` (>= every stamp's time) and makes it
+	 * the only stamp. */
+	void rebaseStamps(double to);
 	void updateGains();
 
 	GridGeometry m_geometry;

@@ -63,6 +63,14 @@ inline double fastAtan2(double y, double x)
 	return y < 0.0 ? -r : r;
 }
 
+/** v clamped to [lo, hi], then converted: a point a billion cells away must
+ * not overflow an int. NaN gives lo. */
+inline int clampToInt(double v, int lo, int hi)
+{
+	if (!(v > lo)) return lo;
+	return v < hi ? static_cast<int>(v) : hi;
+}
+
 /** The two neighbours along one axis of the polar grid and the weight of the
  * second; outside the first and last centres the nearest is used alone. */
 struct Neighbours
@@ -206,11 +214,10 @@ void CPolarToCartesian::forEachInformedCell(
 {
 	if (!m_polar || m_box.empty()) return;
 	const double res = grid.resolution;
-	const int first = std::max(
-		0, static_cast<int>(std::ceil((m_box.yMin - grid.yMin) / res - 0.5)));
-	const int last = std::min(
-		grid.sizeY - 1,
-		static_cast<int>(std::floor((m_box.yMax - grid.yMin) / res - 0.5)));
+	const int first = detail::clampToInt(
+		std::ceil((m_box.yMin - grid.yMin) / res - 0.5), 0, grid.sizeY);
+	const int last = detail::clampToInt(
+		std::floor((m_box.yMax - grid.yMin) / res - 0.5), -1, grid.sizeY - 1);
 	if (first > last) return;
 	m_spans.fill(m_polygon, grid, first, last);
 	m_uniformSpans.fill(m_uniformPolygon, grid, first, last);
