@@ -107,8 +107,9 @@ bool CEvidentialGridMap2D::insertScan(
 					 "hold a scan at ("
 				  << sensor->x << ", " << sensor->y << ") within its budget of "
 				  << m_maxCells
-				  << " cells (creationOpts maxCells); such scans are inserted "
-					 "only where they overlap the grid. Shown once.\n";
+				  << " cells (creationOpts maxCells) and 1e9 m of the origin; "
+					 "such scans are inserted only where they overlap the grid. "
+					 "Shown once.\n";
 	}
 
 	const FusionRule rule = insertionOptions.fusionRule;
