@@ -108,7 +108,6 @@ void CPolarToCartesian::setup(
 	if (n == 0 || polar.maxInformedBins() == 0) return;
 
 	const double bin = polar.binSize(), spacing = polar.sectorSpacing();
-	m_fullTurn = polar.fullTurn();
 	m_invSpacing = 1.0 / spacing;
 	m_span = static_cast<double>(n) * spacing;
 	m_invBin = 1.0 / bin;
@@ -135,7 +134,7 @@ void CPolarToCartesian::setup(
 		m_directions[2 * i] = turnC * px - turnS * py;
 		m_directions[2 * i + 1] = turnS * px + turnC * py;
 	}
-	if (m_fullTurn)
+	if (polar.fullTurn())
 		setDirection(n + 1, polar.firstSectorAngle());
 	else
 		setDirection(n + 1, polar.sectorAngle(n - 1) + 0.5 * spacing);

@@ -153,7 +153,6 @@ class CPolarToCartesian
 	const CPolarSourceGrid* m_polar = nullptr;
 	PlanarSensorPose m_sensor;
 	Box m_box;
-	bool m_fullTurn = false;
 	/** Squared reach of each sector: half a bin past its last informed bin. */
 	std::vector<double> m_reach2;
 	/** Outlines of the informed and of the uniform regions (x, y pairs), and
@@ -178,7 +177,7 @@ inline bool CPolarToCartesian::mixAt(double dx, double dy, Mass& observed) const
 	if (angle >= 2 * M_PI) angle -= 2 * M_PI;
 	if (angle >= m_span) return false;  // outside the field of view
 	const auto ns =
-		detail::neighbours(angle * m_invSpacing - 0.5, nSectors, m_fullTurn);
+		detail::neighbours(angle * m_invSpacing - 0.5, nSectors, polar.fullTurn());
 	const double r2 = dx * dx + dy * dy;
 	if (r2 >= std::max(m_reach2[ns.lo], m_reach2[ns.hi])) return false;
 	const auto nb =
