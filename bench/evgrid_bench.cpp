@@ -265,7 +265,7 @@ void ourSourceGrid(benchmark::State& state, ScanKind kind, double res)
 	for (auto _ : state)
 	{
 		polar.build(scan, options);
-		benchmark::DoNotOptimize(polar.rows());
+		benchmark::DoNotOptimize(polar.maxInformedBins());
 	}
 }
 

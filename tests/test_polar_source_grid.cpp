@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "test_helpers.h"
 
@@ -56,7 +57,7 @@ void expectSingleImpactRow(const CPolarSourceGrid& grid, std::size_t s, double r
 	const std::size_t hit = binOf(r);
 	for (std::size_t b = 0; b < grid.binCount(); ++b)
 	{
-		const Mass& m = grid.at(s, b);
+		const Mass m = grid.at(s, b);
 		ASSERT_TRUE(m.isValid());
 		if (b < hit)
 			ASSERT_MASS_NEAR_AT(m, Mass::simpleFree(kMuF), 1e-12, s, b);
@@ -140,22 +141,70 @@ TEST(PolarSourceGrid, WideSectorsGatherSeveralBeams)
 	EXPECT_NEAR(grid.sectorSpacing(), o.sectorWidth, 1e-9);
 	// Sector 10 is centred on beam 30 and holds beams 29, 30 and 31.
 	const double ranges[] = {beamRange(29), beamRange(30), beamRange(31)};
-	const Mass* row = grid.sectorRow(10);
 	const double free3 = 1 - std::pow(1 - kMuF, 3);
 	for (std::size_t b = 0; b < binOf(ranges[0]); ++b)
-		ASSERT_MASS_NEAR_AT(row[b], Mass::simpleFree(free3), 1e-12, 10, b);
+		ASSERT_MASS_NEAR_AT(grid.at(10, b), Mass::simpleFree(free3), 1e-12, 10, b);
 	// Each impact's bin holds muO, or 1 - (1 - muO)^2 where two share a bin.
 	std::vector<int> hits(grid.binCount(), 0);
 	for (const double r : ranges) ++hits[binOf(r)];
 	for (std::size_t b = binOf(ranges[0]); b < grid.binCount(); ++b)
 	{
 		const double o = 1 - std::pow(1 - kMuO, hits[b]);
-		ASSERT_MASS_NEAR_AT(row[b], Mass::simpleOccupied(o), 1e-12, 10, b);
+		ASSERT_MASS_NEAR_AT(grid.at(10, b), Mass::simpleOccupied(o), 1e-12, 10, b);
 	}
 	// A width below the beam spacing is raised to it.
 	o.sectorWidth = 0.1 * M_PI / 180;
 	grid.build(syntheticScan(), o);
 	EXPECT_EQ(grid.sectorCount(), 181u);
+}
+
+TEST(PolarSourceGrid, SparseRowsMatchTheFullRowsScanAfterScan)
+{
+	// One sector gathers every beam of a narrow scan (sectorWidth above the
+	// aperture), so its row must equal sectorMasses() of the valid ranges:
+	// close and far impacts, overlapping imprecise bands, returns beyond
+	// maxRange and no returns, on one grid reused scan after scan.
+	std::mt19937 rng(7);
+	std::uniform_real_distribution<double> range(0.01, 12.0), unit(0.0, 1.0);
+	CPolarSourceGrid grid;
+	for (int trial = 0; trial < 300; ++trial)
+	{
+		TSourceGridOptions o = options();
+		o.sectorWidth = 1.0;
+		o.sensorModel.model = static_cast<SensorModel>(trial % 3);
+		o.sensorModel.imprecision = 0.5 * unit(rng);
+		o.sensorModel.profile = trial % 2 ? ImprecisionProfile::Gaussian
+										  : ImprecisionProfile::Box;
+		o.invalidRangesAsFree = trial % 4 == 0;
+		CObservation2DRangeScan scan;
+		scan.aperture = 0.01f;
+		const std::size_t n = 1 + static_cast<std::size_t>(unit(rng) * 30);
+		scan.resizeScan(n);
+		std::vector<double> impacts;
+		for (std::size_t i = 0; i < n; ++i)
+		{
+			const bool valid = unit(rng) > 0.2;
+			const auto r = static_cast<float>(range(rng));
+			scan.setScanRange(i, r);
+			scan.setScanRangeValidity(i, valid);
+			if (valid)
+				impacts.push_back(r);
+			else if (o.invalidRangesAsFree)
+				impacts.push_back(std::numeric_limits<double>::infinity());
+		}
+		grid.build(scan, o);
+		ASSERT_EQ(grid.sectorCount(), 1u);
+		const std::vector<Mass> expected =
+			sectorMasses(o.sensorModel, impacts, kBin, grid.binCount());
+		std::size_t informed = 0;
+		for (std::size_t b = 0; b < grid.binCount(); ++b)
+		{
+			ASSERT_MASS_NEAR_AT(grid.at(0, b), expected[b], 1e-12, trial, b);
+			if (!(expected[b] == Mass::vacuous())) informed = b + 1;
+		}
+		EXPECT_GE(grid.informedBins(0), informed) << trial;
+		EXPECT_LE(grid.freeBins(0), grid.informedBins(0)) << trial;
+	}
 }
 
 TEST(PolarSourceGrid, EmptyAndSingleBeamScans)

@@ -54,7 +54,7 @@ Mass referenceMix(const CPolarSourceGrid& polar, double lx, double ly)
 		 {std::tuple{s0, b0, (1 - ws) * (1 - wb)}, std::tuple{s0, b1, (1 - ws) * wb},
 		  std::tuple{s1, b0, ws * (1 - wb)}, std::tuple{s1, b1, ws * wb}})
 	{
-		const Mass& p = polar.at(s, b);
+		const Mass p = polar.at(s, b);
 		m.conflict += w * p.conflict;
 		m.free += w * p.free;
 		m.occupied += w * p.occupied;

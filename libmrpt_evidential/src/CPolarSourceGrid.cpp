@@ -104,45 +104,31 @@ void CPolarSourceGrid::build(
 		m_observed[sector] = 1;
 	}
 
-	// Rows keep their vacuous tails from one scan to the next: only what the
-	// previous scan wrote is cleared, so the cost follows the ranges, not
-	// maxRange. A new shape starts from an all-vacuous grid.
-	if (m_rowsShape != std::make_pair(m_sectorCount, m_binCount))
-	{
-		m_masses.assign(m_sectorCount * m_binCount, Mass::vacuous());
-		m_informedBins.assign(m_sectorCount, 0);
-		m_freeBins.assign(m_sectorCount, 0);
-		m_rowsShape = {m_sectorCount, m_binCount};
-	}
+	m_layouts.resize(m_sectorCount);
+	m_runs.clear();
+	m_masses.clear();
 	m_maxInformedBins = 0;
 	for (std::size_t s = 0; s < m_sectorCount; ++s)
 	{
-		Mass* row = m_masses.data() + s * m_binCount;
-		std::fill(row, row + m_informedBins[s], Mass::vacuous());
-		const detail::SectorExtent extent = detail::writeSectorRow(
-			options.sensorModel, m_impacts[s].data(), m_impacts[s].size(),
-			m_binSize, m_binCount, row);
-		m_informedBins[s] = extent.informedBins;
-		m_freeBins[s] = extent.freeBins;
-		m_maxInformedBins = std::max(m_maxInformedBins, m_informedBins[s]);
+		std::vector<double>& impacts = m_impacts[s];
+		std::sort(impacts.begin(), impacts.end());
+		m_layouts[s] = detail::appendSectorRow(
+			options.sensorModel, impacts.data(), impacts.size(), m_binSize,
+			m_binCount, m_runs, m_masses);
+		m_maxInformedBins = std::max(m_maxInformedBins, m_layouts[s].informedBins);
 	}
 }
 
-const Mass* CPolarSourceGrid::sectorRow(std::size_t s) const
+Mass CPolarSourceGrid::at(std::size_t sector, std::size_t bin) const
 {
-	if (s >= m_sectorCount)
+	if (sector >= m_sectorCount)
 		throw std::out_of_range(
-			"sector " + std::to_string(s) + " of " +
+			"sector " + std::to_string(sector) + " of " +
 			std::to_string(m_sectorCount));
-	return m_masses.data() + s * m_binCount;
-}
-
-const Mass& CPolarSourceGrid::at(std::size_t sector, std::size_t bin) const
-{
 	if (bin >= m_binCount)
 		throw std::out_of_range(
 			"bin " + std::to_string(bin) + " of " + std::to_string(m_binCount));
-	return sectorRow(sector)[bin];
+	return massAt(sector, bin);
 }
 
 }  // namespace mrpt_evidential

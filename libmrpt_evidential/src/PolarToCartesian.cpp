@@ -167,7 +167,7 @@ void CPolarToCartesian::setup(
 	for (std::size_t s = 0; s < n; ++s)
 	{
 		if (polar.freeBins(s) == 0) continue;
-		const double w = polar.sectorRow(s)[0].free;
+		const double w = polar.freeMass(s);
 		auto it = std::find_if(votes.begin(), votes.end(), [w](const auto& v) {
 			return v.first == w;
 		});
@@ -183,7 +183,7 @@ void CPolarToCartesian::setup(
 	const double w = best->first;
 	m_uniformMass = Mass::simpleFree(w);
 	const auto uniformBins = [&](std::size_t s) {
-		return polar.freeBins(s) > 0 && polar.sectorRow(s)[0].free == w
+		return polar.freeBins(s) > 0 && polar.freeMass(s) == w
 			? polar.freeBins(s)
 			: 0;
 	};

@@ -1,24 +1,21 @@
-/* mrpt-evidential: internal: a sector's row written without the argument
- * checks and the clearing of sectorMassesInto(), for CPolarSourceGrid, which
- * checks its options once per scan and clears only what it wrote before. */
+/* mrpt-evidential: internal: a sector's row written sparsely, for
+ * CPolarSourceGrid (which checks its options once per scan) and for
+ * sectorMassesInto() (which expands it). */
 #pragma once
 
 #include <mrpt_evidential/SensorModel.h>
 
+#include <vector>
+
 namespace mrpt_evidential::detail
 {
-/** How far a written row reaches. */
-struct SectorExtent
-{
-	/** Leading bins that all hold the row's free mass, out[0]. */
-	std::size_t freeBins = 0;
-	/** Leading bins that may hold evidence; the rest stay vacuous. */
-	std::size_t informedBins = 0;
-};
-
-/** sectorMassesInto() on a row that already holds vacuous masses, with
- * arguments already checked; writes only the leading informed bins. */
-SectorExtent writeSectorRow(
-	const SensorModelParams& params, const double* impactRanges,
-	std::size_t nImpacts, double binSize, std::size_t nBins, Mass* out);
+/** Writes the row of a sector whose arguments are already checked and whose
+ * impact ranges are sorted in increasing order: its leading free bins as a
+ * count and one mass, and the bins past them that may hold evidence as runs
+ * appended to `runs` (offsets into `masses`, where their masses are
+ * appended). Bins outside the runs are vacuous. */
+TSectorLayout appendSectorRow(
+	const SensorModelParams& params, const double* sortedRanges,
+	std::size_t nImpacts, double binSize, std::size_t nBins,
+	std::vector<TBinRun>& runs, std::vector<Mass>& masses);
 }  // namespace mrpt_evidential::detail

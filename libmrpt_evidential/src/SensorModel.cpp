@@ -87,11 +87,11 @@ Band occupiedBand(
 /** Profile weight g of bin b for an impact at range r (g = 1 at the impact's
  * own bin). */
 double profileWeight(
-	const SensorModelParams& p, double r, const Band& band, std::size_t b,
+	const SensorModelParams& p, double r, std::size_t ownBin, std::size_t b,
 	double binSize)
 {
 	if (p.model != SensorModel::ImpreciseMultiEcho ||
-		p.profile == ImprecisionProfile::Box || b == band.own)
+		p.profile == ImprecisionProfile::Box || b == ownBin)
 		return 1.0;
 	// sigma = d / 2, so x^2 / (2 sigma^2) = 2 x^2 / d^2.
 	const double x = (static_cast<double>(b) + 0.5) * binSize - r;
@@ -102,41 +102,68 @@ double profileWeight(
 
 namespace detail
 {
-SectorExtent writeSectorRow(
-	const SensorModelParams& params, const double* impactRanges,
-	std::size_t nImpacts, double binSize, std::size_t nBins, Mass* out)
+TSectorLayout appendSectorRow(
+	const SensorModelParams& params, const double* sortedRanges,
+	std::size_t nImpacts, double binSize, std::size_t nBins,
+	std::vector<TBinRun>& runs, std::vector<Mass>& masses)
 {
-	if (nImpacts == 0) return {};
-	std::size_t firstOccupied = nBins, occupiedEnd = 0;
+	TSectorLayout layout;
+	layout.firstRun = runs.size();
+	if (nImpacts == 0) return layout;
+
+	// Sorted impacts give bands sorted by their first bin. Runs hold the
+	// bands; bands a few bins apart share a run (its vacuous bins cost less
+	// than one more run to look through).
+	constexpr std::size_t kJoinGap = 8;
+	std::size_t firstOccupied = nBins;
 	for (std::size_t i = 0; i < nImpacts; ++i)
 	{
-		const double r = impactRanges[i];
-		const Band band = occupiedBand(params, r, binSize, nBins);
+		const Band band = occupiedBand(params, sortedRanges[i], binSize, nBins);
 		firstOccupied = std::min(firstOccupied, band.first);
-		if (band.first >= nBins) continue;
-		occupiedEnd = std::max(occupiedEnd, std::min(band.last + 1, nBins));
+		if (band.first >= nBins) break;
+		const std::size_t end = std::min(band.last + 1, nBins);
+		if (runs.size() > layout.firstRun &&
+			band.first <= runs.back().end + kJoinGap)
+		{
+			TBinRun& run = runs.back();
+			if (end > run.end)
+			{
+				masses.resize(masses.size() + (end - run.end), Mass::vacuous());
+				run.end = end;
+			}
+		}
+		else
+		{
+			runs.push_back({band.first, end, masses.size()});
+			masses.resize(masses.size() + (end - band.first), Mass::vacuous());
+		}
+		Mass* row = masses.data() + runs.back().offset - runs.back().begin;
 		if (params.model == SensorModel::MultiEcho)
 		{
-			out[band.first] = Mass::simpleOccupied(params.muO);
+			row[band.first] = Mass::simpleOccupied(params.muO);
 			continue;
 		}
 		// Reinforcement: the occupied mass of a bin is 1 - prod(1 - muO g_i)
 		// over the impacts whose band holds it; accumulate the product in
 		// m(Omega) and turn it into m(O) below.
-		const std::size_t end = std::min(band.last + 1, nBins);
 		for (std::size_t b = band.first; b < end; ++b)
-			out[b].unknown *= 1.0 - params.muO * profileWeight(params, r, band, b, binSize);
+			row[b].unknown *= 1.0 -
+				params.muO * profileWeight(params, sortedRanges[i], band.own, b, binSize);
 	}
-	if (params.model != SensorModel::MultiEcho)
-		for (std::size_t b = firstOccupied; b < occupiedEnd; ++b)
-			out[b].occupied = 1.0 - out[b].unknown;
+	layout.runCount = runs.size() - layout.firstRun;
+	if (layout.runCount > 0 && params.model != SensorModel::MultiEcho)
+		for (std::size_t i = runs[layout.firstRun].offset; i < masses.size(); ++i)
+			masses[i].occupied = 1.0 - masses[i].unknown;
 
+	layout.freeBins = firstOccupied;
 	// Every beam crossed the bins before the nearest band.
-	const double freeWeight = params.model == SensorModel::MultiEcho || nImpacts == 1
-		? params.muF
-		: 1.0 - std::pow(1.0 - params.muF, static_cast<double>(nImpacts));
-	std::fill(out, out + firstOccupied, Mass::simpleFree(freeWeight));
-	return {firstOccupied, std::max(firstOccupied, occupiedEnd)};
+	if (firstOccupied > 0)
+		layout.freeMass = params.model == SensorModel::MultiEcho || nImpacts == 1
+			? params.muF
+			: 1.0 - std::pow(1.0 - params.muF, static_cast<double>(nImpacts));
+	layout.informedBins =
+		layout.runCount > 0 ? runs.back().end : firstOccupied;
+	return layout;
 }
 }  // namespace detail
 
@@ -145,10 +172,20 @@ std::size_t sectorMassesInto(
 	std::size_t nImpacts, double binSize, std::size_t nBins, Mass* out)
 {
 	checkArguments(params, impactRanges, nImpacts, binSize);
-	std::fill(out, out + nBins, Mass::vacuous());
-	return detail::writeSectorRow(
-			   params, impactRanges, nImpacts, binSize, nBins, out)
-		.informedBins;
+	std::vector<double> sorted(impactRanges, impactRanges + nImpacts);
+	std::sort(sorted.begin(), sorted.end());
+	std::vector<TBinRun> runs;
+	std::vector<Mass> masses;
+	const TSectorLayout layout = detail::appendSectorRow(
+		params, sorted.data(), nImpacts, binSize, nBins, runs, masses);
+	std::fill(out, out + layout.freeBins, Mass::simpleFree(layout.freeMass));
+	std::fill(out + layout.freeBins, out + nBins, Mass::vacuous());
+	for (const TBinRun& run : runs)
+		std::copy(
+			masses.begin() + static_cast<std::ptrdiff_t>(run.offset),
+			masses.begin() + static_cast<std::ptrdiff_t>(run.offset + run.end - run.begin),
+			out + run.begin);
+	return layout.informedBins;
 }
 
 std::vector<Mass> sectorMasses(
@@ -183,7 +220,7 @@ std::vector<Mass> sectorMassesByCombination(
 				impact = Mass::simpleFree(params.muF);
 			else if (b <= band.last)
 				impact = Mass::simpleOccupied(
-					params.muO * profileWeight(params, r, band, b, binSize));
+					params.muO * profileWeight(params, r, band.own, b, binSize));
 			cumulative[b] = conjunctive(cumulative[b], impact);
 			mask[b] = disjunctive(
 				mask[b], b < band.first ? Mass::degenerate() : maskBehind);

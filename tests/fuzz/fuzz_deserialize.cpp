@@ -61,11 +61,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 	// The map keeps working: one scan in its middle, at a time of today
 	// (times read from a file may lie anywhere). A budget read from a file
 	// is trusted as the user's setting; here it is
-	// cut so that growth stays small. Polar grids of more than 4000 bins per
-	// sector wait for the insertion fix of their allocation.
+	// cut so that growth stays small.
 	const GridGeometry& g = map.geometry();
 	map.setMaxCells(std::max(g.cellCount(), std::min<std::size_t>(map.maxCells(), 1 << 20)));
-	if (map.insertionOptions.maxRange / g.resolution > 4000) return 0;
 	mrpt::obs::CObservation2DRangeScan scan;
 	scan.aperture = static_cast<float>(M_PI);
 	scan.timestamp = mrpt::Clock::fromDouble(1.7e9);

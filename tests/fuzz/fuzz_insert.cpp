@@ -25,10 +25,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 	fuzz::Reader in(data, size);
 	fuzz::visit(in, c);
 
-	// Tables keep the polar grid small (its size follows maxRange, see
-	// LongMaxRangeAtFineResolutionAllocatesLittle) and cover the extremes.
+	// Tables cover the extremes; 1000 m at 0.05 m gives polar rows of 20,000
+	// bins, which the sparse rows must not pay for.
 	static const double kResolutions[] = {0.05, 0.1, 0.25};
-	static const double kMaxRanges[] = {0.5, 3.0, 12.0};
+	static const double kMaxRanges[] = {0.5, 3.0, 12.0, 1000.0};
 	static const double kDecayRates[] = {0.0, 1e-9, 0.1, 10.0, 1e6, 1e300};
 	CEvidentialGridMap2D map(-2, 2, -2, 2, kResolutions[c.resolution % 3]);
 	map.setMaxCells(1 << 20);
@@ -42,7 +42,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 	o.muO = c.muO / 65535.0;
 	o.imprecision = c.imprecision * 0.01;
 	o.sectorWidth = c.sectorWidth * (2 * M_PI / 255);
-	o.maxRange = kMaxRanges[c.maxRange % 3];
+	o.maxRange = kMaxRanges[c.maxRange % 4];
 	o.decayRate = kDecayRates[c.decay % 6];
 	o.horizontalTolerance = c.tolerance * (M_PI / 2 / 255);
 	o.growthMargin = c.margin * 0.1;

@@ -7,7 +7,6 @@
 #include <mrpt_evidential/SensorModel.h>
 
 #include <cstddef>
-#include <utility>
 #include <vector>
 
 namespace mrpt::obs
@@ -48,7 +47,11 @@ struct TSourceGridOptions
  * [b binSize, (b + 1) binSize). Each beam goes to the sector nearest to its
  * angle; its range is an impact of that sector when it is valid: flagged
  * valid, finite and > 0. Other ranges are no return (see
- * TSourceGridOptions::invalidRangesAsFree). */
+ * TSourceGridOptions::invalidRangesAsFree).
+ *
+ * Rows are kept sparse (TSectorLayout): a row's leading free bins are a count
+ * and one mass, and only the bins around its impacts are stored, so memory
+ * and time follow the returns, not maxRange / binSize. */
 class CPolarSourceGrid
 {
    public:
@@ -81,31 +84,41 @@ class CPolarSourceGrid
 
 	/** Number of leading bins of sector s that may hold evidence; every bin
 	 * from it on is vacuous. */
-	std::size_t informedBins(std::size_t s) const { return m_informedBins.at(s); }
-	/** Number of leading bins of sector s that all hold its free mass (the
-	 * mass of bin 0): the bins before its nearest impact. */
-	std::size_t freeBins(std::size_t s) const { return m_freeBins.at(s); }
+	std::size_t informedBins(std::size_t s) const { return m_layouts.at(s).informedBins; }
+	/** Number of leading bins of sector s that all hold its free mass: the
+	 * bins before its nearest impact. */
+	std::size_t freeBins(std::size_t s) const { return m_layouts.at(s).freeBins; }
+	/** m(F) of the leading free bins of sector s (0 when it has none). */
+	double freeMass(std::size_t s) const { return m_layouts.at(s).freeMass; }
 	/** The largest informedBins() of all sectors. */
 	std::size_t maxInformedBins() const { return m_maxInformedBins; }
 
-	/** The masses of one sector's row, binCount() of them.
-	 * \throws std::out_of_range if s >= sectorCount(). */
-	const Mass* sectorRow(std::size_t s) const;
-	/** All rows, row-major (sector s starts at s * binCount()), for loops
-	 * that index them directly. */
-	const Mass* rows() const { return m_masses.data(); }
-	/** \throws std::out_of_range if a coordinate is out of range. */
-	const Mass& at(std::size_t sector, std::size_t bin) const;
+	/** The mass of one bin.
+	 * \throws std::out_of_range if a coordinate is out of range. */
+	Mass at(std::size_t sector, std::size_t bin) const;
+	/** at() without the checks, for the transform's inner loop: sector <
+	 * sectorCount(), bin < binCount(). */
+	Mass massAt(std::size_t sector, std::size_t bin) const
+	{
+		const TSectorLayout& row = m_layouts[sector];
+		if (bin < row.freeBins) return Mass::simpleFree(row.freeMass);
+		const TBinRun* run = m_runs.data() + row.firstRun;
+		for (const TBinRun* end = run + row.runCount; run != end; ++run)
+		{
+			if (bin < run->begin) break;
+			if (bin < run->end) return m_masses[run->offset + (bin - run->begin)];
+		}
+		return Mass::vacuous();
+	}
 
    private:
 	std::size_t m_sectorCount = 0, m_binCount = 0;
 	double m_binSize = 0.0, m_firstAngle = 0.0, m_spacing = 0.0;
 	bool m_fullTurn = false;
-	std::vector<Mass> m_masses;  //!< row-major, one row per sector
+	std::vector<TSectorLayout> m_layouts;  //!< one per sector
+	std::vector<TBinRun> m_runs;
+	std::vector<Mass> m_masses;  //!< the runs' masses
 	std::vector<char> m_observed;
-	std::vector<std::size_t> m_informedBins, m_freeBins;
-	/** Sectors and bins the rows were laid out for. */
-	std::pair<std::size_t, std::size_t> m_rowsShape{0, 0};
 	std::size_t m_maxInformedBins = 0;
 	std::vector<std::vector<double>> m_impacts;  //!< per sector, reused
 };

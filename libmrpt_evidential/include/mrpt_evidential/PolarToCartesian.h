@@ -182,13 +182,8 @@ inline bool CPolarToCartesian::mixAt(double dx, double dy, Mass& observed) const
 	if (r2 >= std::max(m_reach2[ns.lo], m_reach2[ns.hi])) return false;
 	const auto nb =
 		detail::neighbours(std::sqrt(r2) * m_invBin - 0.5, nBins, false);
-	const Mass* rows = polar.rows();
-	const Mass* rowLo = rows + ns.lo * nBins;
-	const Mass* rowHi = rows + ns.hi * nBins;
-	const Mass& a = rowLo[nb.lo];
-	const Mass& b = rowLo[nb.hi];
-	const Mass& c = rowHi[nb.lo];
-	const Mass& d = rowHi[nb.hi];
+	const Mass a = polar.massAt(ns.lo, nb.lo), b = polar.massAt(ns.lo, nb.hi);
+	const Mass c = polar.massAt(ns.hi, nb.lo), d = polar.massAt(ns.hi, nb.hi);
 	const double wa = (1 - ns.wHi) * (1 - nb.wHi), wb = (1 - ns.wHi) * nb.wHi,
 				 wc = ns.wHi * (1 - nb.wHi), wd = ns.wHi * nb.wHi;
 	observed = {

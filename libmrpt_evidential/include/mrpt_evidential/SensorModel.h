@@ -52,6 +52,29 @@ struct SensorModelParams
 	void validate() const;
 };
 
+/** A run of range bins [begin, end) of a sector row kept sparse, whose masses
+ * are stored from `offset` on in a list of masses. */
+struct TBinRun
+{
+	std::size_t begin = 0, end = 0, offset = 0;
+};
+
+/** Where the evidence of a sector row kept sparse lies: its leading free bins
+ * all hold one free mass, then runs of bins (in increasing order, after the
+ * free bins) hold occupied evidence; every other bin is vacuous. A row then
+ * costs memory for its impacts, not for its length. */
+struct TSectorLayout
+{
+	/** Leading bins that all hold Mass::simpleFree(freeMass): the bins before
+	 * the nearest impact. */
+	std::size_t freeBins = 0;
+	double freeMass = 0.0;
+	/** Leading bins that may hold evidence; every bin from it on is vacuous. */
+	std::size_t informedBins = 0;
+	/** The row's runs, by index into a list of runs. */
+	std::size_t firstRun = 0, runCount = 0;
+};
+
 /** One sector's row of masses, bin b covering ranges [b binSize,
  * (b + 1) binSize) (a range a billionth of a bin below an edge counts in the
  * upper bin, so that binary rounding of r / binSize does not move ranges that
