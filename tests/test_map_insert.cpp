@@ -196,6 +196,37 @@ TEST(MapInsert, CellsStoreWithinQuantization)
 	EXPECT_NEAR(massAtPolar(map, sensor, 2.0, 0.3).free, kMuF, 1e-5);
 }
 
+TEST(MapInsert, BulkCellsTrackDoublePrecisionOverManyScans)
+{
+	// The bulk of a scan is fused in integer arithmetic. A cell that first
+	// holds a wall's occupied evidence, then lies deep in free space for a
+	// thousand scans with decay (every tenth scan looking away), stays within
+	// 1e-3 of the double-precision algebra, and within two steps after one.
+	CEvidentialGridMap2D map = makeMap(SensorModel::ReinforcedMultiEcho);
+	const double rate = 0.05;
+	map.insertionOptions.decayRate = rate;
+	const CPose3D sensor = kRobot + makeScan([](double) { return 2.0; }).sensorPose;
+	double t = 0.0;
+	for (int i = 0; i < 20; ++i)
+		map.insertObservation(makeScan([](double) { return 2.0; }, t += 0.1), kRobot);
+	Mass reference = massAtPolar(map, sensor, 2.0, 0.3);
+	ASSERT_GT(reference.occupied, 0.1);
+	const CPose3D away = kRobot + CPose3D(0, 0, 0, M_PI, 0, 0);
+	double lastSeen = t;
+	for (int i = 1; i <= 1000; ++i)
+	{
+		const bool looksAway = i % 10 == 0;
+		map.insertObservation(makeScan([](double) { return 4.0; }, t += 0.1), looksAway ? away : kRobot);
+		if (looksAway) continue;
+		reference = conjunctive(
+			discount(reference, 1.0 - std::exp(-rate * (t - lastSeen))),
+			Mass::simpleFree(kMuF));
+		lastSeen = t;
+		const Mass m = massAtPolar(map, sensor, 2.0, 0.3);
+		ASSERT_MASS_NEAR_AT(m, reference, i == 1 ? kStoreTol : 1e-3, i, t);
+	}
+}
+
 TEST(MapInsert, ObstacleThatAppearsGivesConflict)
 {
 	for (const ConflictHandling handling :

@@ -53,6 +53,28 @@ inline void fuseConjunctive(
 		c);
 	c.stamp = grid.currentStamp();
 }
+
+/** fuseConjunctive() with a simple free mass, the mass of the bulk of a
+ * scan's cells, in integer arithmetic: `w16` is m(F) in 1/65536, and each
+ * decayed or fused value is rounded to nearest (at most one step from the
+ * double-precision kernel). Every product stays below 2^32, and rounding
+ * never lets a value exceed what it is taken from, so the masses keep summing
+ * to at most the scale without a check. */
+inline void fuseFreeFixedPoint(
+	EvidentialGridStorage& grid, std::size_t idx, std::uint32_t w16)
+{
+	QuantizedCell& c = grid.rawCell(idx);
+	const auto d = static_cast<std::uint32_t>(grid.decayFactor(c.stamp) * 65536.0 + 0.5);
+	const std::uint32_t e = (c.conflict * d + 32768) >> 16,
+						f = (c.free * d + 32768) >> 16,
+						o = (c.occupied * d + 32768) >> 16;
+	const std::uint32_t u = static_cast<std::uint32_t>(kMassScale) - e - f - o;
+	const std::uint32_t t = (o * w16 + 32768) >> 16;
+	c.conflict = static_cast<std::uint16_t>(e + t);
+	c.free = static_cast<std::uint16_t>(f + ((u * w16 + 32768) >> 16));
+	c.occupied = static_cast<std::uint16_t>(o - t);
+	c.stamp = grid.currentStamp();
+}
 }  // namespace
 
 bool CEvidentialGridMap2D::internal_insertObservation(
@@ -127,9 +149,8 @@ bool CEvidentialGridMap2D::insertScan(
 			[&](std::size_t idx, const Mass& observed) {
 				fuseConjunctive(m_grid, idx, observed);
 			},
-			[&, w = uniform.free](std::size_t idx) {
-				fuseConjunctive(m_grid, idx, Mass::simpleFree(w));
-			});
+			[&, w16 = static_cast<std::uint32_t>(uniform.free * 65536.0 + 0.5)](
+				std::size_t idx) { fuseFreeFixedPoint(m_grid, idx, w16); });
 	else
 		m_transform.forEachInformedCell(
 			geometry(), fuse, [&](std::size_t idx) { fuse(idx, uniform); });

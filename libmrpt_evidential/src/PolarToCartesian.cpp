@@ -202,24 +202,33 @@ void CPolarToCartesian::RowSpans::fill(
 	const double res = grid.resolution;
 	const std::size_t nRows = static_cast<std::size_t>(last - first + 1);
 	// Each edge crosses the centre lines y in [lower end, upper end): a vertex
-	// is counted once, so every row holds an even number of crossings.
+	// is counted once, so every row holds an even number of crossings. The
+	// edges that cross a row are listed once, then walked twice (count, fill).
 	const std::size_t nPoints = polygon.size() / 2;
+	edges.clear();
+	for (std::size_t i = 0; i < nPoints; ++i)
+	{
+		const std::size_t j = i + 1 == nPoints ? 0 : i + 1;
+		const double x0 = polygon[2 * i], y0 = polygon[2 * i + 1];
+		const double x1 = polygon[2 * j], y1 = polygon[2 * j + 1];
+		if (y0 == y1) continue;
+		const double lo = std::min(y0, y1), hi = std::max(y0, y1);
+		const int r0 = detail::clampToInt(
+			std::ceil((lo - grid.yMin) / res - 0.5), first, last + 1);
+		const int r1 = detail::clampToInt(
+			std::ceil((hi - grid.yMin) / res - 0.5), first, last + 1);
+		if (r0 >= r1) continue;
+		const double slope = (x1 - x0) / (y1 - y0);
+		edges.push_back(
+			{r0 - first, r1 - first, x0 + (grid.cellCenterY(r0) - y0) * slope,
+			 slope * res});
+	}
 	const auto forEachCrossing = [&](auto&& f) {
-		for (std::size_t i = 0; i < nPoints; ++i)
+		for (const Edge& e : edges)
 		{
-			const std::size_t j = (i + 1) % nPoints;
-			const double x0 = polygon[2 * i], y0 = polygon[2 * i + 1];
-			const double x1 = polygon[2 * j], y1 = polygon[2 * j + 1];
-			if (y0 == y1) continue;
-			const double lo = std::min(y0, y1), hi = std::max(y0, y1);
-			const int r0 = detail::clampToInt(
-				std::ceil((lo - grid.yMin) / res - 0.5), first, last + 1);
-			const int r1 =
-				detail::clampToInt(std::ceil((hi - grid.yMin) / res - 0.5), first, last + 1) - 1;
-			const double slope = (x1 - x0) / (y1 - y0);
-			for (int r = r0; r <= r1; ++r)
-				f(static_cast<std::size_t>(r - first),
-				  x0 + (grid.cellCenterY(r) - y0) * slope);
+			double x = e.x;
+			for (int r = e.row0; r < e.row1; ++r, x += e.dxPerRow)
+				f(static_cast<std::size_t>(r), x);
 		}
 	};
 	start.assign(nRows + 1, 0);

@@ -142,6 +142,14 @@ class CPolarToCartesian
 		std::vector<std::size_t> start, cursor;
 		std::vector<int> columns;  //!< pairs: first and last column
 		std::vector<double> crossingX;
+		/** Polygon edges that cross a row: rows [row0, row1) from `first`,
+		 * x at row0 and its change per row. */
+		struct Edge
+		{
+			int row0, row1;
+			double x, dxPerRow;
+		};
+		std::vector<Edge> edges;
 		void fill(
 			const std::vector<double>& polygon, const GridGeometry& grid,
 			int first, int last);
