@@ -24,20 +24,17 @@ namespace
 {
 /** Builds the outline of a region made of one radius per gap between sector
  * centres (and per half sector at the ends of a scan that is not a full
- * turn): radiusOf(lo, hi) for the gap between sectors lo and hi. Runs of
- * `block` gaps share one arc, at the largest of their radii for an outline
- * that must hold the region (`outside`), the smallest for one that must stay
- * inside it: a few hundred corners instead of one per beam keep the rows'
- * crossings few. Arcs become chords of at most 22.5 degrees, pushed out far
- * enough to hold the arc when `outside`; a radius of 0 puts the sensor
- * itself in the outline. `directions` holds the world unit vectors of the
- * gaps' ends (x, y pairs): the start of sector 0's span, every centre, the
- * end of the last span. */
+ * turn): radiusOf(lo, hi) for the gap between sectors lo and hi. Arcs become
+ * chords of at most 22.5 degrees, pushed out far enough to hold the arc when
+ * `outside` (an outline that must hold the region; otherwise it must stay
+ * inside it); a radius of 0 puts the sensor itself in the outline.
+ * `directions` holds the world unit vectors of the gaps' ends (x, y pairs):
+ * the start of sector 0's span, every centre, the end of the last span. */
 template <typename RadiusOf>
 void outline(
 	std::vector<double>& polygon, Box* box, const CPolarSourceGrid& polar,
 	const PlanarSensorPose& sensor, const std::vector<double>& directions,
-	bool outside, std::size_t block, RadiusOf radiusOf)
+	bool outside, RadiusOf radiusOf)
 {
 	polygon.clear();
 	const auto addPoint = [&](double x, double y) {
@@ -80,17 +77,8 @@ void outline(
 	// Gap g lies between centres g and g + 1 (g + 1 wraps to 0 for the last
 	// gap of a full turn); direction entry c + 1 is centre c.
 	const std::size_t gaps = polar.fullTurn() ? n : n - 1;
-	for (std::size_t g = 0; g < gaps; g += block)
-	{
-		const std::size_t end = std::min(gaps, g + block);
-		double radius = radiusOf(g, (g + 1) % n);
-		for (std::size_t k = g + 1; k < end; ++k)
-		{
-			const double r = radiusOf(k, (k + 1) % n);
-			radius = outside ? std::max(radius, r) : std::min(radius, r);
-		}
-		addArc(radius, g + 1, end + 1, static_cast<double>(end - g) * spacing);
-	}
+	for (std::size_t g = 0; g < gaps; ++g)
+		addArc(radiusOf(g, (g + 1) % n), g + 1, g + 2, spacing);
 	if (!polar.fullTurn())
 		addArc(radiusOf(n - 1, n - 1), n, n + 1, 0.5 * spacing);
 }
@@ -149,14 +137,8 @@ void CPolarToCartesian::setup(
 	}
 	// Between two sector centres the mix reaches as far as the longer
 	// sector; before the first and after the last centre, the sector alone.
-	// The informed region's outline gets a corner every 2 degrees or so; the
-	// uniform region's keeps one per gap, as a coarse one would leave many
-	// cells of jagged scans to the slower mixed path.
-	// Compared as doubles: the sectors of a tiny aperture are tinier still.
-	const auto block = static_cast<std::size_t>(std::clamp(
-		std::floor(2.0 * M_PI / 180.0 / spacing), 1.0, static_cast<double>(n)));
 	outline(
-		m_polygon, &m_box, polar, sensor, m_directions, true, block,
+		m_polygon, &m_box, polar, sensor, m_directions, true,
 		[&](std::size_t lo, std::size_t hi) {
 			return std::sqrt(std::max(m_reach2[lo], m_reach2[hi]));
 		});
@@ -188,7 +170,7 @@ void CPolarToCartesian::setup(
 			: 0;
 	};
 	outline(
-		m_uniformPolygon, nullptr, polar, sensor, m_directions, false, 1,
+		m_uniformPolygon, nullptr, polar, sensor, m_directions, false,
 		[&](std::size_t lo, std::size_t hi) {
 			const std::size_t bins = std::min(uniformBins(lo), uniformBins(hi));
 			return bins == 0 ? 0.0 : (static_cast<double>(bins) - 0.5) * bin;

@@ -47,19 +47,19 @@ struct Box
 namespace detail
 {
 /** atan2 to within 2e-6 rad, several times faster than std::atan2: on a
- * 20 m ray the error is 0.04 mm. */
+ * 20 m ray the error is 0.04 mm. Written without branches so that loops over
+ * many points vectorize. */
 inline double fastAtan2(double y, double x)
 {
 	const double ax = std::abs(x), ay = std::abs(y);
 	const double hi = std::max(ax, ay), lo = std::min(ax, ay);
-	if (hi == 0.0) return 0.0;
-	const double a = lo / hi, s = a * a;
+	const double a = lo / (hi > 0.0 ? hi : 1.0), s = a * a;
 	// Odd minimax polynomial for atan on [0, 1].
 	double r = (((-0.0117212 * s + 0.05265332) * s - 0.11643287) * s +
 				0.19354346) * s;
 	r = ((r - 0.33262347) * s + 0.99997726) * a;
-	if (ay > ax) r = M_PI_2 - r;
-	if (x < 0.0) r = M_PI - r;
+	r = ay > ax ? M_PI_2 - r : r;
+	r = x < 0.0 ? M_PI - r : r;
 	return y < 0.0 ? -r : r;
 }
 
@@ -155,8 +155,16 @@ class CPolarToCartesian
 			int first, int last);
 	};
 
-	/** The mix for one cell, or false when it is vacuous. */
-	bool mixAt(double dx, double dy, Mass& observed) const;
+	/** Cells handled per batch of the mixed path. */
+	static constexpr int kBatch = 64;
+	/** For `count` <= kBatch cells of a row, `dx0` + k res east and `dy`
+	 * north of the sensor: the angle from the start of sector 0's span in
+	 * [0, 2 pi), and the range. One loop without branches: it vectorizes. */
+	void polarOfCells(
+		double dx0, double dy, double res, int count, double* angle,
+		double* range) const;
+	/** The mix at a cell's polar coordinates, or false when it is vacuous. */
+	bool mixAt(double angle, double range, Mass& observed) const;
 
 	const CPolarSourceGrid* m_polar = nullptr;
 	PlanarSensorPose m_sensor;
@@ -173,23 +181,34 @@ class CPolarToCartesian
 		   m_yawOffset = 0;
 };
 
-inline bool CPolarToCartesian::mixAt(double dx, double dy, Mass& observed) const
+inline void CPolarToCartesian::polarOfCells(
+	double dx0, double dy, double res, int count, double* angle,
+	double* range) const
+{
+	const double twoPi = 2 * M_PI;
+	for (int k = 0; k < count; ++k)
+	{
+		const double dx = dx0 + k * res;
+		// m_yawOffset is in [0, 2 pi) and atan2 in [-pi, pi].
+		double a = m_dir * (detail::fastAtan2(dy, dx) - m_yawOffset);
+		a = a < 0.0 ? a + twoPi : a;
+		a = a < 0.0 ? a + twoPi : a;
+		a = a >= twoPi ? a - twoPi : a;
+		angle[k] = a;
+		range[k] = std::sqrt(dx * dx + dy * dy);
+	}
+}
+
+inline bool CPolarToCartesian::mixAt(
+	double angle, double range, Mass& observed) const
 {
 	const CPolarSourceGrid& polar = *m_polar;
-	const std::size_t nSectors = polar.sectorCount(), nBins = polar.binCount();
-	// The angle from the start of sector 0's span, in [0, 2 pi): m_yawOffset
-	// is in [0, 2 pi) and atan2 in [-pi, pi].
-	double angle = m_dir * (detail::fastAtan2(dy, dx) - m_yawOffset);
-	if (angle < 0.0) angle += 2 * M_PI;
-	if (angle < 0.0) angle += 2 * M_PI;
-	if (angle >= 2 * M_PI) angle -= 2 * M_PI;
 	if (angle >= m_span) return false;  // outside the field of view
-	const auto ns =
-		detail::neighbours(angle * m_invSpacing - 0.5, nSectors, polar.fullTurn());
-	const double r2 = dx * dx + dy * dy;
-	if (r2 >= std::max(m_reach2[ns.lo], m_reach2[ns.hi])) return false;
+	const auto ns = detail::neighbours(
+		angle * m_invSpacing - 0.5, polar.sectorCount(), polar.fullTurn());
+	if (range * range >= std::max(m_reach2[ns.lo], m_reach2[ns.hi])) return false;
 	const auto nb =
-		detail::neighbours(std::sqrt(r2) * m_invBin - 0.5, nBins, false);
+		detail::neighbours(range * m_invBin - 0.5, polar.binCount(), false);
 	const Mass a = polar.massAt(ns.lo, nb.lo), b = polar.massAt(ns.lo, nb.hi);
 	const Mass c = polar.massAt(ns.hi, nb.lo), d = polar.massAt(ns.hi, nb.hi);
 	const double wa = (1 - ns.wHi) * (1 - nb.wHi), wb = (1 - ns.wHi) * nb.wHi,
@@ -233,9 +252,16 @@ void CPolarToCartesian::forEachInformedCell(
 		std::size_t u = m_uniformSpans.start[k];
 		const std::size_t uEnd = m_uniformSpans.start[k + 1];
 		const auto mixed = [&](int from, int to) {
-			for (int cx = from; cx <= to; ++cx)
-				if (mixAt(grid.cellCenterX(cx) - m_sensor.x, dy, observed))
-					visitMixed(rowIndex + static_cast<std::size_t>(cx), observed);
+			double angle[kBatch], range[kBatch];
+			for (int cx = from; cx <= to; cx += kBatch)
+			{
+				const int count = std::min(kBatch, to - cx + 1);
+				polarOfCells(
+					grid.cellCenterX(cx) - m_sensor.x, dy, res, count, angle, range);
+				for (int k = 0; k < count; ++k)
+					if (mixAt(angle[k], range[k], observed))
+						visitMixed(rowIndex + static_cast<std::size_t>(cx + k), observed);
+			}
 		};
 		for (std::size_t o = m_spans.start[k]; o < m_spans.start[k + 1]; o += 2)
 		{
