@@ -36,43 +36,52 @@ Mass applyConflictHandling(Mass m, ConflictHandling handling)
 	}
 	return m;
 }
-/** The default path, taken by nearly every cell: the cell decayed and fused
- * conjunctively with `observed` straight on its stored values (the result of
- * read, conjunctive and write, without their generality). */
+/** Stores conflict, free and occupied masses given in stored units,
+ * rounded to nearest without branches (so that loops of it vectorize). The
+ * values are fused masses: each within [0, kMassScale] and all three summing
+ * to at most kMassScale, up to rounding errors far below half a step. The
+ * clamps absorb those errors, so the stored values never exceed the scale
+ * together. */
+template <typename Real>
+inline void storeRounded(QuantizedCell& c, Real conflict, Real free, Real occupied)
+{
+	constexpr int kScale = static_cast<int>(kMassScale);
+	const int e = static_cast<int>(conflict + Real(0.5));
+	const int o = std::min(static_cast<int>(occupied + Real(0.5)), kScale - e);
+	const int f = std::min(static_cast<int>(free + Real(0.5)), kScale - e - o);
+	c.conflict = static_cast<std::uint16_t>(e);
+	c.free = static_cast<std::uint16_t>(f);
+	c.occupied = static_cast<std::uint16_t>(o);
+}
+
+/** The default path, taken by the cells a scan informs: the cell decayed and
+ * fused conjunctively with `observed` straight on its stored values (the
+ * result of read, conjunctive and write, without their generality). */
 inline void fuseConjunctive(
 	EvidentialGridStorage& grid, std::size_t idx, const Mass& observed)
 {
 	QuantizedCell& c = grid.rawCell(idx);
-	const double d = grid.decayFactor(c.stamp) / kMassScale;
+	const double d = grid.decayFactor(c.stamp);
 	const double e = c.conflict * d, f = c.free * d, o = c.occupied * d;
-	const double u = 1.0 - e - f - o;
+	const double u = kMassScale - e - f - o;
 	const double of = observed.free, oo = observed.occupied, ou = observed.unknown;
-	encodeMass(
-		{e + observed.conflict * (1.0 - e) + f * oo + o * of,
-		 f * (of + ou) + u * of, o * (oo + ou) + u * oo, u * ou},
-		c);
+	storeRounded(
+		c, e + observed.conflict * (kMassScale - e) + f * oo + o * of,
+		f * (of + ou) + u * of, o * (oo + ou) + u * oo);
 	c.stamp = grid.currentStamp();
 }
 
-/** fuseConjunctive() with a simple free mass, the mass of the bulk of a
- * scan's cells, in integer arithmetic: `w16` is m(F) in 1/65536, and each
- * decayed or fused value is rounded to nearest (at most one step from the
- * double-precision kernel). Every product stays below 2^32, and rounding
- * never lets a value exceed what it is taken from, so the masses keep summing
- * to at most the scale without a check. */
-inline void fuseFreeFixedPoint(
-	EvidentialGridStorage& grid, std::size_t idx, std::uint32_t w16)
+/** fuseConjunctive() with a simple free mass `w`, the mass of the bulk of a
+ * scan's cells, in single precision (the compiler runs it on four cells at
+ * once): a float holds a stored value to 1/256 of a step. */
+inline void fuseFreeSinglePrecision(
+	EvidentialGridStorage& grid, std::size_t idx, float w)
 {
 	QuantizedCell& c = grid.rawCell(idx);
-	const auto d = static_cast<std::uint32_t>(grid.decayFactor(c.stamp) * 65536.0 + 0.5);
-	const std::uint32_t e = (c.conflict * d + 32768) >> 16,
-						f = (c.free * d + 32768) >> 16,
-						o = (c.occupied * d + 32768) >> 16;
-	const std::uint32_t u = static_cast<std::uint32_t>(kMassScale) - e - f - o;
-	const std::uint32_t t = (o * w16 + 32768) >> 16;
-	c.conflict = static_cast<std::uint16_t>(e + t);
-	c.free = static_cast<std::uint16_t>(f + ((u * w16 + 32768) >> 16));
-	c.occupied = static_cast<std::uint16_t>(o - t);
+	const auto d = static_cast<float>(grid.decayFactor(c.stamp));
+	const float e = c.conflict * d, f = c.free * d, o = c.occupied * d;
+	const float u = static_cast<float>(kMassScale) - e - f - o;
+	storeRounded(c, e + o * w, f + u * w, o - o * w);
 	c.stamp = grid.currentStamp();
 }
 }  // namespace
@@ -149,8 +158,9 @@ bool CEvidentialGridMap2D::insertScan(
 			[&](std::size_t idx, const Mass& observed) {
 				fuseConjunctive(m_grid, idx, observed);
 			},
-			[&, w16 = static_cast<std::uint32_t>(uniform.free * 65536.0 + 0.5)](
-				std::size_t idx) { fuseFreeFixedPoint(m_grid, idx, w16); });
+			[&, w = static_cast<float>(uniform.free)](std::size_t idx) {
+				fuseFreeSinglePrecision(m_grid, idx, w);
+			});
 	else
 		m_transform.forEachInformedCell(
 			geometry(), fuse, [&](std::size_t idx) { fuse(idx, uniform); });
