@@ -38,12 +38,18 @@ void outline(
 {
 	polygon.clear();
 	const auto addPoint = [&](double x, double y) {
+		// Neighbouring arcs of one radius meet at the same corner.
+		const std::size_t size = polygon.size();
+		if (size >= 2 && polygon[size - 2] == x && polygon[size - 1] == y) return;
 		polygon.push_back(x);
 		polygon.push_back(y);
 		if (box) box->add(x, y);
 	};
 	const double dir = sensor.mirrored ? -1.0 : 1.0;
-	// The arc from direction entry i to entry j, `width` radians wide.
+	// The arc from direction entry i to entry j, `width` radians wide. Nearly
+	// every arc is one sector wide: its chords are worked out once.
+	double lastWidth = -1.0, step = 0.0, pushOut = 1.0;
+	int pieces = 1;
 	const auto addArc = [&](double radius, std::size_t i, std::size_t j,
 							double width) {
 		if (radius <= 0.0)
@@ -51,10 +57,14 @@ void outline(
 			addPoint(sensor.x, sensor.y);
 			return;
 		}
-		const int pieces =
-			std::max(1, static_cast<int>(std::ceil(width / (M_PI / 8))));
-		const double step = width / pieces;
-		const double rho = outside ? radius / std::cos(0.5 * step) : radius;
+		if (width != lastWidth)
+		{
+			lastWidth = width;
+			pieces = std::max(1, static_cast<int>(std::ceil(width / (M_PI / 8))));
+			step = width / pieces;
+			pushOut = outside ? 1.0 / std::cos(0.5 * step) : 1.0;
+		}
+		const double rho = radius * pushOut;
 		const double cx = directions[2 * i], cy = directions[2 * i + 1];
 		addPoint(sensor.x + rho * cx, sensor.y + rho * cy);
 		for (int k = 1; k < pieces; ++k)
@@ -187,23 +197,26 @@ void CPolarToCartesian::RowSpans::fill(
 	// is counted once, so every row holds an even number of crossings. The
 	// edges that cross a row are listed once, then walked twice (count, fill).
 	const std::size_t nPoints = polygon.size() / 2;
+	const double invRes = 1.0 / res;
+	// The first row whose centre line lies at or above each corner.
+	vertexRow.resize(nPoints);
+	for (std::size_t i = 0; i < nPoints; ++i)
+		vertexRow[i] = detail::clampToInt(
+			std::ceil((polygon[2 * i + 1] - grid.yMin) * invRes - 0.5), first,
+			last + 1);
 	edges.clear();
 	for (std::size_t i = 0; i < nPoints; ++i)
 	{
 		const std::size_t j = i + 1 == nPoints ? 0 : i + 1;
-		const double x0 = polygon[2 * i], y0 = polygon[2 * i + 1];
-		const double x1 = polygon[2 * j], y1 = polygon[2 * j + 1];
-		if (y0 == y1) continue;
-		const double lo = std::min(y0, y1), hi = std::max(y0, y1);
-		const int r0 = detail::clampToInt(
-			std::ceil((lo - grid.yMin) / res - 0.5), first, last + 1);
-		const int r1 = detail::clampToInt(
-			std::ceil((hi - grid.yMin) / res - 0.5), first, last + 1);
-		if (r0 >= r1) continue;
-		const double slope = (x1 - x0) / (y1 - y0);
+		if (vertexRow[i] == vertexRow[j]) continue;  // crosses no centre line
+		const std::size_t lo = vertexRow[i] < vertexRow[j] ? i : j;
+		const std::size_t hi = lo == i ? j : i;
+		const double x0 = polygon[2 * lo], y0 = polygon[2 * lo + 1];
+		const double slope = (polygon[2 * hi] - x0) / (polygon[2 * hi + 1] - y0);
+		const int r0 = vertexRow[lo];
 		edges.push_back(
-			{r0 - first, r1 - first, x0 + (grid.cellCenterY(r0) - y0) * slope,
-			 slope * res});
+			{r0 - first, vertexRow[hi] - first,
+			 x0 + (grid.cellCenterY(r0) - y0) * slope, slope * res});
 	}
 	const auto forEachCrossing = [&](auto&& f) {
 		for (const Edge& e : edges)
@@ -235,9 +248,9 @@ void CPolarToCartesian::RowSpans::fill(
 		for (std::size_t c = from; c + 1 < to; c += 2)
 		{
 			const int c0 = detail::clampToInt(
-				std::ceil((xs[c] - grid.xMin) / res - 0.5), 0, grid.sizeX);
+				std::ceil((xs[c] - grid.xMin) * invRes - 0.5), 0, grid.sizeX);
 			const int c1 = detail::clampToInt(
-				std::floor((xs[c + 1] - grid.xMin) / res - 0.5), -1, grid.sizeX - 1);
+				std::floor((xs[c + 1] - grid.xMin) * invRes - 0.5), -1, grid.sizeX - 1);
 			if (c0 > c1) continue;
 			columns.push_back(c0);
 			columns.push_back(c1);

@@ -150,6 +150,7 @@ class CPolarToCartesian
 			double x, dxPerRow;
 		};
 		std::vector<Edge> edges;
+		std::vector<int> vertexRow;
 		void fill(
 			const std::vector<double>& polygon, const GridGeometry& grid,
 			int first, int last);
