@@ -126,16 +126,13 @@ TSectorLayout appendSectorRow(
 			band.first <= runs.back().end + kJoinGap)
 		{
 			TBinRun& run = runs.back();
-			if (end > run.end)
-			{
-				masses.resize(masses.size() + (end - run.end), Mass::vacuous());
-				run.end = end;
-			}
+			for (; run.end < end; ++run.end) masses.push_back(Mass::vacuous());
 		}
 		else
 		{
 			runs.push_back({band.first, end, masses.size()});
-			masses.resize(masses.size() + (end - band.first), Mass::vacuous());
+			for (std::size_t b = band.first; b < end; ++b)
+				masses.push_back(Mass::vacuous());
 		}
 		Mass* row = masses.data() + runs.back().offset - runs.back().begin;
 		if (params.model == SensorModel::MultiEcho)
