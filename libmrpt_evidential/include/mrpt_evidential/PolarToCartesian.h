@@ -58,9 +58,14 @@ inline double fastAtan2(double y, double x)
 	double r = (((-0.0117212 * s + 0.05265332) * s - 0.11643287) * s +
 				0.19354346) * s;
 	r = ((r - 0.33262347) * s + 0.99997726) * a;
-	r = ay > ax ? M_PI_2 - r : r;
-	r = x < 0.0 ? M_PI - r : r;
-	return y < 0.0 ? -r : r;
+	// Both sides of each choice are computed first: the compiler then turns
+	// the choices into selects (it does not add arithmetic to a branch).
+	const double steep = M_PI_2 - r;
+	r = ay > ax ? steep : r;
+	const double behind = M_PI - r;
+	r = x < 0.0 ? behind : r;
+	const double negated = -r;
+	return y < 0.0 ? negated : r;
 }
 
 /** v clamped to [lo, hi], then converted: a point a billion cells away must
@@ -160,12 +165,14 @@ class CPolarToCartesian
 	static constexpr int kBatch = 64;
 	/** For `count` <= kBatch cells of a row, `dx0` + k res east and `dy`
 	 * north of the sensor: the angle from the start of sector 0's span in
-	 * [0, 2 pi), and the range. One loop without branches: it vectorizes. */
+	 * [0, 2 pi), and the squared range. One loop without branches or library
+	 * calls: it vectorizes. */
 	void polarOfCells(
 		double dx0, double dy, double res, int count, double* angle,
-		double* range) const;
-	/** The mix at a cell's polar coordinates, or false when it is vacuous. */
-	bool mixAt(double angle, double range, Mass& observed) const;
+		double* range2) const;
+	/** The mix at a cell's polar coordinates (angle as polarOfCells() gives
+	 * it, squared range), or false when it is vacuous. */
+	bool mixAt(double angle, double range2, Mass& observed) const;
 
 	const CPolarSourceGrid* m_polar = nullptr;
 	PlanarSensorPose m_sensor;
@@ -184,32 +191,30 @@ class CPolarToCartesian
 
 inline void CPolarToCartesian::polarOfCells(
 	double dx0, double dy, double res, int count, double* angle,
-	double* range) const
+	double* range2) const
 {
-	const double twoPi = 2 * M_PI;
+	const double twoPi = 2 * M_PI, dir = m_dir, yawOffset = m_yawOffset;
 	for (int k = 0; k < count; ++k)
 	{
 		const double dx = dx0 + k * res;
-		// m_yawOffset is in [0, 2 pi) and atan2 in [-pi, pi].
-		double a = m_dir * (detail::fastAtan2(dy, dx) - m_yawOffset);
-		a = a < 0.0 ? a + twoPi : a;
-		a = a < 0.0 ? a + twoPi : a;
-		a = a >= twoPi ? a - twoPi : a;
-		angle[k] = a;
-		range[k] = std::sqrt(dx * dx + dy * dy);
+		// yawOffset is in [0, 2 pi) and atan2 in [-pi, pi].
+		const double a = dir * (detail::fastAtan2(dy, dx) - yawOffset);
+		const double up = a + twoPi, upTwice = up + twoPi, down = a - twoPi;
+		angle[k] = a < 0.0 ? (up < 0.0 ? upTwice : up) : (a >= twoPi ? down : a);
+		range2[k] = dx * dx + dy * dy;
 	}
 }
 
 inline bool CPolarToCartesian::mixAt(
-	double angle, double range, Mass& observed) const
+	double angle, double range2, Mass& observed) const
 {
 	const CPolarSourceGrid& polar = *m_polar;
 	if (angle >= m_span) return false;  // outside the field of view
 	const auto ns = detail::neighbours(
 		angle * m_invSpacing - 0.5, polar.sectorCount(), polar.fullTurn());
-	if (range * range >= std::max(m_reach2[ns.lo], m_reach2[ns.hi])) return false;
-	const auto nb =
-		detail::neighbours(range * m_invBin - 0.5, polar.binCount(), false);
+	if (range2 >= std::max(m_reach2[ns.lo], m_reach2[ns.hi])) return false;
+	const auto nb = detail::neighbours(
+		std::sqrt(range2) * m_invBin - 0.5, polar.binCount(), false);
 	const Mass a = polar.massAt(ns.lo, nb.lo), b = polar.massAt(ns.lo, nb.hi);
 	const Mass c = polar.massAt(ns.hi, nb.lo), d = polar.massAt(ns.hi, nb.hi);
 	const double wa = (1 - ns.wHi) * (1 - nb.wHi), wb = (1 - ns.wHi) * nb.wHi,
@@ -253,14 +258,14 @@ void CPolarToCartesian::forEachInformedCell(
 		std::size_t u = m_uniformSpans.start[k];
 		const std::size_t uEnd = m_uniformSpans.start[k + 1];
 		const auto mixed = [&](int from, int to) {
-			double angle[kBatch], range[kBatch];
+			double angle[kBatch], range2[kBatch];
 			for (int cx = from; cx <= to; cx += kBatch)
 			{
 				const int count = std::min(kBatch, to - cx + 1);
 				polarOfCells(
-					grid.cellCenterX(cx) - m_sensor.x, dy, res, count, angle, range);
+					grid.cellCenterX(cx) - m_sensor.x, dy, res, count, angle, range2);
 				for (int k = 0; k < count; ++k)
-					if (mixAt(angle[k], range[k], observed))
+					if (mixAt(angle[k], range2[k], observed))
 						visitMixed(rowIndex + static_cast<std::size_t>(cx + k), observed);
 			}
 		};
