@@ -87,18 +87,21 @@ struct Neighbours
 inline Neighbours neighbours(double position, std::size_t count, bool wraps)
 {
 	// position >= -1 here: truncation of position + 1 is the floor, without
-	// std::floor's slow path on processors before SSE4.1.
+	// std::floor's slow path on processors before SSE4.1. Selects, not
+	// branches: a cell's neighbours are hard to predict.
 	const double shifted = position + 1.0;
 	const auto whole = static_cast<std::ptrdiff_t>(shifted);
 	const double w = shifted - static_cast<double>(whole);
-	const std::ptrdiff_t f = whole - 1;
-	if (f < 0)
-		return wraps ? Neighbours{count - 1, 0, w} : Neighbours{0, 0, 0.0};
-	const auto lo = static_cast<std::size_t>(f);
-	if (lo + 1 >= count)
-		return wraps && lo + 1 == count ? Neighbours{lo, 0, w}
-										: Neighbours{count - 1, count - 1, 0.0};
-	return {lo, lo + 1, w};
+	const std::ptrdiff_t f = whole - 1, last = static_cast<std::ptrdiff_t>(count) - 1;
+	if (wraps)  // position < count: only the ends wrap
+		return {
+			static_cast<std::size_t>(f < 0 ? last : f),
+			static_cast<std::size_t>(f >= last ? 0 : f + 1), w};
+	const std::ptrdiff_t lo = std::clamp<std::ptrdiff_t>(f, 0, last),
+						 hi = std::clamp<std::ptrdiff_t>(f + 1, 0, last);
+	return {
+		static_cast<std::size_t>(lo), static_cast<std::size_t>(hi),
+		lo == hi ? 0.0 : w};
 }
 }  // namespace detail
 
@@ -225,12 +228,11 @@ inline bool CPolarToCartesian::mixAt(
 		wa * a.occupied + wb * b.occupied + wc * c.occupied + wd * d.occupied,
 		wa * a.unknown + wb * b.unknown + wc * c.unknown + wd * d.unknown};
 	if (observed.unknown >= 1.0 - 1e-12) return false;
-	if (a.occupied > 0.0 || b.occupied > 0.0 || c.occupied > 0.0 ||
-		d.occupied > 0.0)
-	{
-		observed.unknown += observed.free;
-		observed.free = 0.0;
-	}
+	const bool touchedByImpact =
+		a.occupied + b.occupied + c.occupied + d.occupied > 0.0;
+	const double freeToUnknown = touchedByImpact ? observed.free : 0.0;
+	observed.unknown += freeToUnknown;
+	observed.free -= freeToUnknown;
 	return true;
 }
 
