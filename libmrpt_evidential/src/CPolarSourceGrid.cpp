@@ -80,17 +80,18 @@ void CPolarSourceGrid::build(
 	m_observed.assign(m_sectorCount, 0);
 
 	constexpr double kNoReturn = std::numeric_limits<double>::infinity();
+	const double invSpacing = 1.0 / m_spacing;
 	for (std::size_t i = 0; i < nBeams; ++i)
 	{
 		std::size_t sector = 0;
 		if (nBeams > 1)
 		{
-			const double position = std::max(
-				0.0, std::round((scan.getScanAngle(i) - m_firstAngle) / m_spacing));
-			sector = m_fullTurn
-				? static_cast<std::size_t>(position) % m_sectorCount
-				: std::min<std::size_t>(
-					  m_sectorCount - 1, static_cast<std::size_t>(position));
+			// Nearest sector; positions are >= 0 up to rounding, so adding
+			// half and truncating rounds (without a call to std::round).
+			const auto position = static_cast<std::size_t>(std::max(
+				0.0, (scan.getScanAngle(i) - m_firstAngle) * invSpacing + 0.5));
+			sector = m_fullTurn ? position % m_sectorCount
+								: std::min(m_sectorCount - 1, position);
 		}
 		const double r = scan.getScanRange(i);
 		const bool valid = scan.getScanRangeValidity(i) && std::isfinite(r) &&
