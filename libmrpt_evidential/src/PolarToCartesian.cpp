@@ -137,20 +137,23 @@ void CPolarToCartesian::setup(
 	else
 		setDirection(n + 1, polar.sectorAngle(n - 1) + 0.5 * spacing);
 
-	m_reach2.resize(n);
+	m_sectorSpans.resize(n);
 	for (std::size_t s = 0; s < n; ++s)
 	{
 		const double reach = polar.informedBins(s) == 0
 			? 0.0
 			: (static_cast<double>(polar.informedBins(s)) + 0.5) * bin;
-		m_reach2[s] = reach * reach;
+		const double freeEnd = (static_cast<double>(polar.freeBins(s)) - 0.5) * bin;
+		m_sectorSpans[s] = {
+			reach * reach, polar.freeBins(s) == 0 ? -1.0 : freeEnd * freeEnd,
+			polar.freeMass(s)};
 	}
 	// Between two sector centres the mix reaches as far as the longer
 	// sector; before the first and after the last centre, the sector alone.
 	outline(
 		m_polygon, &m_box, polar, sensor, m_directions, true,
 		[&](std::size_t lo, std::size_t hi) {
-			return std::sqrt(std::max(m_reach2[lo], m_reach2[hi]));
+			return std::sqrt(std::max(m_sectorSpans[lo].reach2, m_sectorSpans[hi].reach2));
 		});
 
 	// The uniform region: the free mass most sectors start with, where both

@@ -180,8 +180,18 @@ class CPolarToCartesian
 	const CPolarSourceGrid* m_polar = nullptr;
 	PlanarSensorPose m_sensor;
 	Box m_box;
-	/** Squared reach of each sector: half a bin past its last informed bin. */
-	std::vector<double> m_reach2;
+	/** What the mix needs of a sector, side by side. */
+	struct SectorSpan
+	{
+		/** Squared reach: half a bin past the last informed bin (from it on
+		 * the two bins around a range are vacuous). */
+		double reach2;
+		/** Squared end of the free run (before it the two bins around a
+		 * range both hold freeMass); negative without a free run. */
+		double freeEnd2;
+		double freeMass;
+	};
+	std::vector<SectorSpan> m_sectorSpans;
 	/** Outlines of the informed and of the uniform regions (x, y pairs), and
 	 * the world directions of their corners. */
 	std::vector<double> m_polygon, m_uniformPolygon, m_directions;
@@ -215,7 +225,19 @@ inline bool CPolarToCartesian::mixAt(
 	if (angle >= m_span) return false;  // outside the field of view
 	const auto ns = detail::neighbours(
 		angle * m_invSpacing - 0.5, polar.sectorCount(), polar.fullTurn());
-	if (range2 >= std::max(m_reach2[ns.lo], m_reach2[ns.hi])) return false;
+	const SectorSpan &lo = m_sectorSpans[ns.lo], &hi = m_sectorSpans[ns.hi];
+	if (range2 >= std::max(lo.reach2, hi.reach2)) return false;
+	// Where each sector's two bins hold one constant mass (free run or
+	// vacuous tail: most cells between sectors of different lengths), the mix
+	// is along the angle only, with no range bins to look up.
+	const bool loFree = range2 < lo.freeEnd2, hiFree = range2 < hi.freeEnd2;
+	if ((loFree || range2 >= lo.reach2) && (hiFree || range2 >= hi.reach2))
+	{
+		const double free = (1 - ns.wHi) * (loFree ? lo.freeMass : 0.0) +
+			ns.wHi * (hiFree ? hi.freeMass : 0.0);
+		observed = Mass::simpleFree(free);
+		return free > 1e-12;
+	}
 	const auto nb = detail::neighbours(
 		std::sqrt(range2) * m_invBin - 0.5, polar.binCount(), false);
 	const Mass a = polar.massAt(ns.lo, nb.lo), b = polar.massAt(ns.lo, nb.hi);
