@@ -81,6 +81,14 @@ void CPolarSourceGrid::build(
 
 	constexpr double kNoReturn = std::numeric_limits<double>::infinity();
 	const double invSpacing = 1.0 / m_spacing;
+	// Beam angles by the formula CObservation2DRangeScan::getScanAngle()
+	// documents, in the same float arithmetic, and ranges read in place:
+	// three library calls per beam cost more than the rest of this loop.
+	const float sign = scan.rightToLeft ? 1.0f : -1.0f;
+	const float firstBeam = sign * (-0.5f * scan.aperture);
+	const float beamStep =
+		nBeams > 1 ? sign * (scan.aperture / static_cast<float>(nBeams - 1)) : 0.0f;
+	const float* ranges = nBeams > 0 ? &scan.getScanRange(0) : nullptr;
 	for (std::size_t i = 0; i < nBeams; ++i)
 	{
 		std::size_t sector = 0;
@@ -88,12 +96,13 @@ void CPolarSourceGrid::build(
 		{
 			// Nearest sector; positions are >= 0 up to rounding, so adding
 			// half and truncating rounds (without a call to std::round).
-			const auto position = static_cast<std::size_t>(std::max(
-				0.0, (scan.getScanAngle(i) - m_firstAngle) * invSpacing + 0.5));
+			const float angle = firstBeam + beamStep * static_cast<float>(i);
+			const auto position = static_cast<std::size_t>(
+				std::max(0.0, (angle - m_firstAngle) * invSpacing + 0.5));
 			sector = m_fullTurn ? position % m_sectorCount
 								: std::min(m_sectorCount - 1, position);
 		}
-		const double r = scan.getScanRange(i);
+		const double r = ranges[i];
 		const bool valid = scan.getScanRangeValidity(i) && std::isfinite(r) &&
 			r > 0.0;
 		if (valid)
