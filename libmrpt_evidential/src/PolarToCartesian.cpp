@@ -158,7 +158,8 @@ void CPolarToCartesian::setup(
 
 	// The uniform region: the free mass most sectors start with, where both
 	// sectors around a gap hold it in the two bins around every centre.
-	std::vector<std::pair<double, std::size_t>> votes;
+	auto& votes = m_freeMassVotes;
+	votes.clear();
 	for (std::size_t s = 0; s < n; ++s)
 	{
 		if (polar.freeBins(s) == 0) continue;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstddef>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace mrpt::poses
@@ -196,6 +197,9 @@ class CPolarToCartesian
 	 * the world directions of their corners. */
 	std::vector<double> m_polygon, m_uniformPolygon, m_directions;
 	Mass m_uniformMass;
+	/** Free masses of the sectors and how many sectors hold each (setup()'s
+	 * scratch, kept to reuse its storage). */
+	std::vector<std::pair<double, std::size_t>> m_freeMassVotes;
 	RowSpans m_spans, m_uniformSpans;
 	/** Constants of mixAt(), set by setup(). */
 	double m_invSpacing = 0, m_span = 0, m_invBin = 0, m_dir = 1,
