@@ -92,6 +92,26 @@ void outline(
 	if (!polar.fullTurn())
 		addArc(radiusOf(n - 1, n - 1), n, n + 1, 0.5 * spacing);
 }
+/** Sorts a row's crossings. They arrive in the outline's order, which for an
+ * outline around the sensor is nearly sorted, forwards or backwards along
+ * the row: reversed when backwards, insertion sorts them in a few steps
+ * (std::sort moves them with a library call per element). */
+void sortCrossings(double* first, double* last)
+{
+	if (last - first > 64)
+	{
+		std::sort(first, last);
+		return;
+	}
+	if (last - first > 1 && *first > *(last - 1)) std::reverse(first, last);
+	for (double* i = first + 1; i < last; ++i)
+	{
+		const double x = *i;
+		double* j = i;
+		for (; j > first && *(j - 1) > x; --j) *j = *(j - 1);
+		*j = x;
+	}
+}
 }  // namespace
 
 void CPolarToCartesian::setup(
@@ -245,9 +265,7 @@ void CPolarToCartesian::RowSpans::fill(
 	for (std::size_t k = 0; k < nRows; ++k)
 	{
 		const std::size_t to = start[k + 1];
-		std::sort(
-			xs.begin() + static_cast<std::ptrdiff_t>(from),
-			xs.begin() + static_cast<std::ptrdiff_t>(to));
+		sortCrossings(xs.data() + from, xs.data() + to);
 		start[k] = columns.size();
 		for (std::size_t c = from; c + 1 < to; c += 2)
 		{
