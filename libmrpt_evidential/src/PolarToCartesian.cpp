@@ -98,12 +98,13 @@ void outline(
  * (std::sort moves them with a library call per element). */
 void sortCrossings(double* first, double* last)
 {
+	if (last - first < 2) return;  // an empty row may come as two null pointers
 	if (last - first > 64)
 	{
 		std::sort(first, last);
 		return;
 	}
-	if (last - first > 1 && *first > *(last - 1)) std::reverse(first, last);
+	if (*first > *(last - 1)) std::reverse(first, last);
 	for (double* i = first + 1; i < last; ++i)
 	{
 		const double x = *i;
