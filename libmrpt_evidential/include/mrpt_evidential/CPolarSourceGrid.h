@@ -77,6 +77,9 @@ class CPolarSourceGrid
 	/** True for a scan of a full turn: the sectors go round once, and the
 	 * last one neighbours the first. */
 	bool fullTurn() const { return m_fullTurn; }
+	// The per-sector accessors below throw std::out_of_range if s >=
+	// sectorCount().
+
 	/** True when at least one beam of the sector gave evidence (a valid return,
 	 * or an invalid one read as free). A sector that is not observed is
 	 * vacuous. */
