@@ -586,12 +586,8 @@ int runBuild(int argc, char** argv, int first)
 		".simplemap.gz); the kind is read from the file's content.",
 		false, "", "FILE", cmd);
 
-	switch (parse(cmd, kName, argc, argv, first))
-	{
-		case ParseResult::Done: return 0;
-		case ParseResult::Error: return kExitUsage;
-		case ParseResult::Run: break;
-	}
+	if (const auto exitCode = parse(cmd, kName, argc, argv, first))
+		return *exitCode;
 
 	if (argInput.getValue().empty())
 		throw UsageError("missing the input: -i FILE (a rawlog or simplemap)");

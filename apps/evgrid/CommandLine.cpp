@@ -50,7 +50,7 @@ class CQuietFailureOutput : public TCLAP::StdOutput
 };
 }  // namespace
 
-ParseResult parse(
+std::optional<int> parse(
 	TCLAP::CmdLine& cmd, const std::string& name, int argc, char** argv,
 	int first)
 {
@@ -61,8 +61,8 @@ ParseResult parse(
 	for (int i = first; i < argc; ++i) args.push_back(argv[i]);
 	const bool run = cmd.parse(static_cast<int>(args.size()), args.data());
 	cmd.setOutput(nullptr);
-	if (run) return ParseResult::Run;
-	return output.failed() ? ParseResult::Error : ParseResult::Done;
+	if (run) return std::nullopt;
+	return output.failed() ? kExitUsage : 0;
 }
 
 std::string requireMapFile(const std::string& value)

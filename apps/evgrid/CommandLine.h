@@ -3,6 +3,7 @@
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -20,18 +21,12 @@ class UsageError : public std::runtime_error
 	using std::runtime_error::runtime_error;
 };
 
-/** What parse() found. */
-enum class ParseResult
-{
-	Run,  //!< options are set, go on
-	Done,  //!< --help or --version was printed: exit 0
-	Error  //!< an error was printed: exit kExitUsage
-};
-
 /** Parses argv[first..argc) with `cmd`, printing TCLAP's help and version on
  * stdout and a short error (with a hint to --help) on stderr. `name` is what
- * messages call the program, e.g. "evgrid build". */
-ParseResult parse(
+ * messages call the program, e.g. "evgrid build".
+ * \return nothing when the options are set and the command should run; else
+ *  the exit code: 0 after --help or --version, kExitUsage after an error. */
+std::optional<int> parse(
 	TCLAP::CmdLine& cmd, const std::string& name, int argc, char** argv,
 	int first);
 

@@ -101,12 +101,8 @@ int runExport(int argc, char** argv, int first)
 		"map", "Required. The saved map (.evgrid, plain or gzip-compressed).",
 		false, "", "MAP", cmd);
 
-	switch (parse(cmd, kName, argc, argv, first))
-	{
-		case ParseResult::Done: return 0;
-		case ParseResult::Error: return kExitUsage;
-		case ParseResult::Run: break;
-	}
+	if (const auto exitCode = parse(cmd, kName, argc, argv, first))
+		return *exitCode;
 	requireMapFile(argMap.getValue());
 	if (!argPng.isSet() && !argGridmap.isSet() && !argRos.isSet())
 		throw UsageError("nothing to do: give --png, --gridmap and/or --ros");

@@ -130,12 +130,8 @@ int runInspect(int argc, char** argv, int first)
 		"map", "Required. The saved map (.evgrid, plain or gzip-compressed).",
 		false, "", "MAP", cmd);
 
-	switch (parse(cmd, kName, argc, argv, first))
-	{
-		case ParseResult::Done: return 0;
-		case ParseResult::Error: return kExitUsage;
-		case ParseResult::Run: break;
-	}
+	if (const auto exitCode = parse(cmd, kName, argc, argv, first))
+		return *exitCode;
 	requireMapFile(argMap.getValue());
 	std::vector<TPoint> cells;
 	for (const std::string& text : argCell.getValue())
