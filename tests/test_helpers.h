@@ -1,12 +1,15 @@
-/* Shared helpers of the unit tests: random masses and mass comparisons. */
+/* Shared helpers of the unit tests: random masses, mass comparisons and
+ * threads that start together. */
 #pragma once
 
 #include <gtest/gtest.h>
 #include <mrpt_evidential/Mass.h>
 
+#include <atomic>
 #include <cmath>
 #include <ostream>
 #include <random>
+#include <thread>
 #include <vector>
 
 namespace mrpt_evidential
@@ -61,6 +64,22 @@ inline ::testing::AssertionResult massNear(
 	return ::testing::AssertionFailure()
 		<< actual << " differs from " << expected << " by "
 		<< maxAbsDifference(actual, expected) << " > " << tol;
+}
+
+/** Calls f(t) for t in [0, count) on as many threads, released together so
+ * that their first calls race; returns when every thread is done. */
+template <typename F>
+void runTogether(int count, F f)
+{
+	std::atomic<int> ready{0};
+	std::vector<std::thread> threads;
+	for (int t = 0; t < count; ++t)
+		threads.emplace_back([&, t] {
+			++ready;
+			while (ready.load() < count) std::this_thread::yield();
+			f(t);
+		});
+	for (auto& thread : threads) thread.join();
 }
 
 }  // namespace mrpt_evidential::test

@@ -14,15 +14,15 @@
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <iostream>
 #include <limits>
 #include <random>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
+
+#include "test_helpers.h"
 
 using mrpt::obs::CObservation2DRangeScan;
 using mrpt::poses::CPose2D;
@@ -545,18 +545,11 @@ TEST(Likelihood, ConcurrentFirstUseGivesIdenticalResults)
 		buildRoomMap(map);  // the field is not built yet
 		constexpr int kThreads = 4;
 		std::vector<double> results(kThreads * 3);
-		std::atomic<int> ready{0};
-		std::vector<std::thread> threads;
-		for (int t = 0; t < kThreads; ++t)
-			threads.emplace_back([&, t] {
-				// Everyone starts together, so the first calls race.
-				++ready;
-				while (ready.load() < kThreads) std::this_thread::yield();
-				results[t * 3] = score(map, scan, pose);
-				results[t * 3 + 1] = score(map, scan, moved);
-				results[t * 3 + 2] = score(map, scan, pose);
-			});
-		for (auto& th : threads) th.join();
+		mrpt_evidential::test::runTogether(kThreads, [&](int t) {
+			results[t * 3] = score(map, scan, pose);
+			results[t * 3 + 1] = score(map, scan, moved);
+			results[t * 3 + 2] = score(map, scan, pose);
+		});
 		const double serial = score(map, scan, pose);
 		const double serialMoved = score(map, scan, moved);
 		for (int t = 0; t < kThreads; ++t)

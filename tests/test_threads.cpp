@@ -16,13 +16,13 @@
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <string>
-#include <thread>
 #include <vector>
+
+#include "test_helpers.h"
 
 using namespace mrpt_evidential;
 using mrpt::obs::CObservation2DRangeScan;
@@ -161,15 +161,9 @@ TEST(Threads, ConstMethodsRunConcurrentlyWithColdAndWarmCaches)
 		ASSERT_GT(expected.occupied, 100u);
 
 		std::vector<Readings> got(kThreads);
-		std::atomic<int> ready{0};
-		std::vector<std::thread> threads;
-		for (int t = 0; t < kThreads; ++t)
-			threads.emplace_back([&, t] {
-				++ready;
-				while (ready.load() < kThreads) std::this_thread::yield();
-				got[t] = readAll(map, probe, poses, scratch + "/thread" + std::to_string(t));
-			});
-		for (auto& th : threads) th.join();
+		test::runTogether(kThreads, [&](int t) {
+			got[t] = readAll(map, probe, poses, scratch + "/thread" + std::to_string(t));
+		});
 		for (int t = 0; t < kThreads; ++t) expectEqual(got[t], expected, t);
 	}
 }
