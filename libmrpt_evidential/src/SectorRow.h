@@ -1,6 +1,6 @@
 /* mrpt-evidential: internal: a sector's row written sparsely, for
  * CPolarSourceGrid (which checks its options once per scan) and for
- * sectorMassesInto() (which expands it). */
+ * sectorMasses() (which expands it). */
 #pragma once
 
 #include <mrpt_evidential/SensorModel.h>

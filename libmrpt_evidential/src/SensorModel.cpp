@@ -164,35 +164,24 @@ TSectorLayout appendSectorRow(
 }
 }  // namespace detail
 
-std::size_t sectorMassesInto(
-	const SensorModelParams& params, const double* impactRanges,
-	std::size_t nImpacts, double binSize, std::size_t nBins, Mass* out)
-{
-	checkArguments(params, impactRanges, nImpacts, binSize);
-	std::vector<double> sorted(impactRanges, impactRanges + nImpacts);
-	std::sort(sorted.begin(), sorted.end());
-	std::vector<TBinRun> runs;
-	std::vector<Mass> masses;
-	const TSectorLayout layout = detail::appendSectorRow(
-		params, sorted.data(), nImpacts, binSize, nBins, runs, masses);
-	std::fill(out, out + layout.freeBins, Mass::simpleFree(layout.freeMass));
-	std::fill(out + layout.freeBins, out + nBins, Mass::vacuous());
-	for (const TBinRun& run : runs)
-		std::copy(
-			masses.begin() + static_cast<std::ptrdiff_t>(run.offset),
-			masses.begin() + static_cast<std::ptrdiff_t>(run.offset + run.end - run.begin),
-			out + run.begin);
-	return layout.informedBins;
-}
-
 std::vector<Mass> sectorMasses(
 	const SensorModelParams& params, const std::vector<double>& impactRanges,
 	double binSize, std::size_t nBins)
 {
-	std::vector<Mass> row(nBins);
-	sectorMassesInto(
-		params, impactRanges.data(), impactRanges.size(), binSize, nBins,
-		row.data());
+	checkArguments(params, impactRanges.data(), impactRanges.size(), binSize);
+	std::vector<double> sorted = impactRanges;
+	std::sort(sorted.begin(), sorted.end());
+	std::vector<TBinRun> runs;
+	std::vector<Mass> masses;
+	const TSectorLayout layout = detail::appendSectorRow(
+		params, sorted.data(), sorted.size(), binSize, nBins, runs, masses);
+	std::vector<Mass> row(nBins, Mass::vacuous());
+	std::fill(row.begin(), row.begin() + static_cast<std::ptrdiff_t>(layout.freeBins),
+			  Mass::simpleFree(layout.freeMass));
+	for (const TBinRun& run : runs)
+		std::copy_n(
+			masses.begin() + static_cast<std::ptrdiff_t>(run.offset),
+			run.end - run.begin, row.begin() + static_cast<std::ptrdiff_t>(run.begin));
 	return row;
 }
 

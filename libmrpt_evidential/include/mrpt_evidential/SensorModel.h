@@ -85,20 +85,12 @@ struct TSectorLayout
  * With no impacts every bin is vacuous.
  *
  * Uses the closed forms of the models (doc/sensor-models.md): O(bins +
- * impacts x band width).
+ * impacts x band width). CPolarSourceGrid builds the same rows sparse.
  * \throws std::invalid_argument if the parameters are invalid, binSize is not
  *  a positive finite number, or an impact range is NaN or negative. */
 std::vector<Mass> sectorMasses(
 	const SensorModelParams& params, const std::vector<double>& impactRanges,
 	double binSize, std::size_t nBins);
-
-/** sectorMasses() writing into out[0 .. nBins-1] (no allocation), for callers
- * that build many sectors. Same contract.
- * \return the number of leading bins that may hold evidence: every bin from
- *  it on is vacuous. */
-std::size_t sectorMassesInto(
-	const SensorModelParams& params, const double* impactRanges,
-	std::size_t nImpacts, double binSize, std::size_t nBins, Mass* out);
 
 /** The seed's literal construction of the same row: for each impact, an impact
  * mass function and a mask mass function over the bins; the impact functions
