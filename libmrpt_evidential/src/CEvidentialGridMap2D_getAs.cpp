@@ -11,7 +11,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -20,6 +19,7 @@
 #include <vector>
 
 #include "AtomicFile.h"
+#include "NumberText.h"
 
 using namespace mrpt_evidential;
 using mrpt_evidential::detail::writeFileAtomically;
@@ -37,15 +37,6 @@ std::uint8_t toByte(double v)
 {
 	return static_cast<std::uint8_t>(
 		std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
-}
-
-/** The shortest text that reads back as exactly v (ROS and humans read
- * these files; the default 6 digits would lose time stamps). */
-std::string number(double v)
-{
-	char buf[32];
-	const auto r = std::to_chars(buf, buf + sizeof(buf), v);
-	return std::string(buf, r.ptr);
 }
 
 /** Fills img with one pixel per cell, row 0 holding the largest y;
@@ -166,11 +157,11 @@ void CEvidentialGridMap2D::saveAsROSMap(const std::string& prefix) const
 	writeFileAtomically(prefix + ".yaml", [&](std::ostream& os) {
 		os << "image: "
 		   << yamlScalar(std::filesystem::path(pgmPath).filename().string())
-		   << "\nresolution: " << number(g.resolution) << "\norigin: ["
-		   << number(g.xMin) << ", " << number(g.yMin)
+		   << "\nresolution: " << detail::shortestText(g.resolution) << "\norigin: ["
+		   << detail::shortestText(g.xMin) << ", " << detail::shortestText(g.yMin)
 		   << ", 0.0]\nnegate: 0\noccupied_thresh: "
-		   << number(kRosOccupiedThresh)
-		   << "\nfree_thresh: " << number(kRosFreeThresh) << "\n";
+		   << detail::shortestText(kRosOccupiedThresh)
+		   << "\nfree_thresh: " << detail::shortestText(kRosFreeThresh) << "\n";
 	});
 }
 
@@ -216,13 +207,13 @@ void CEvidentialGridMap2D::saveMetricMapRepresentationToFile(
 		const GridGeometry& g = geometry();
 		const TDecisionCounts c = countDecisions();
 		os << "mrpt_evidential::CEvidentialGridMap2D\n"
-		   << "x: [" << number(g.xMin) << ", " << number(g.xMax()) << "] m\n"
-		   << "y: [" << number(g.yMin) << ", " << number(g.yMax()) << "] m\n"
-		   << "resolution: " << number(g.resolution) << " m\n"
+		   << "x: [" << detail::shortestText(g.xMin) << ", " << detail::shortestText(g.xMax()) << "] m\n"
+		   << "y: [" << detail::shortestText(g.yMin) << ", " << detail::shortestText(g.yMax()) << "] m\n"
+		   << "resolution: " << detail::shortestText(g.resolution) << " m\n"
 		   << "cells: " << g.sizeX << " x " << g.sizeY << " (budget "
 		   << m_maxCells << ")\n"
 		   << "insertions: " << insertionCount() << "\n"
-		   << "latest time: " << number(latestTime()) << " s\n"
+		   << "latest time: " << detail::shortestText(latestTime()) << " s\n"
 		   << "cells by decision: free " << c.free << ", occupied "
 		   << c.occupied << ", unknown " << c.unknown << ", conflict "
 		   << c.conflict << "\n\n";

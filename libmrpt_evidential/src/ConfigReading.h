@@ -9,7 +9,6 @@
 #include <mrpt/typemeta/TEnumType.h>
 
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -18,6 +17,8 @@
 #include <type_traits>
 #include <stdexcept>
 #include <string>
+
+#include "NumberText.h"
 
 namespace mrpt_evidential::detail
 {
@@ -35,13 +36,6 @@ inline std::string readWord(
 	const std::string& key)
 {
 	return source.read_string_first_word(section, key, "", false);
-}
-
-/** The shortest text that reads back as exactly `value`. */
-inline std::string shortestText(double value)
-{
-	char text[40];
-	return std::string(text, std::to_chars(text, text + sizeof(text), value).ptr);
 }
 
 /** A key's value for a message: as the file writes it, or `value` when the

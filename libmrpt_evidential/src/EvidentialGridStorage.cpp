@@ -3,10 +3,11 @@
 #include <mrpt_evidential/EvidentialGridStorage.h>
 
 #include <algorithm>
-#include <charconv>
 #include <limits>
 #include <stdexcept>
 #include <string>
+
+#include "NumberText.h"
 
 namespace mrpt_evidential
 {
@@ -14,14 +15,6 @@ namespace
 {
 /** Above this exponent the gains are rebased, long before exp() overflows. */
 constexpr double kMaxGainExponent = 200.0;
-
-/** The shortest text that reads back as v: std::to_string would print 1e-7
- * as 0.000000. */
-std::string text(double v)
-{
-	char buf[32];
-	return std::string(buf, std::to_chars(buf, buf + sizeof(buf), v).ptr);
-}
 }  // namespace
 
 void EvidentialGridStorage::reset(
@@ -31,20 +24,20 @@ void EvidentialGridStorage::reset(
 	if (!(resolution >= GridGeometry::kMinResolution &&
 		  resolution <= GridGeometry::kMaxResolution))
 		throw std::invalid_argument(
-			"resolution must be in [1e-6, 1e6] m, got " + text(resolution));
+			"resolution must be in [1e-6, 1e6] m, got " + detail::shortestText(resolution));
 	if (!GridGeometry::withinLimits(xMin, xMax, yMin, yMax, resolution))
 		throw std::invalid_argument(
 			"grid bounds must be numbers within 1e9 m of the origin");
 	if (!(xMin < xMax) || !(yMin < yMax))
 		throw std::invalid_argument(
-			"grid bounds need min < max, got x [" + text(xMin) + ", " + text(xMax) +
-			"] y [" + text(yMin) + ", " + text(yMax) + "]");
+			"grid bounds need min < max, got x [" + detail::shortestText(xMin) + ", " + detail::shortestText(xMax) +
+			"] y [" + detail::shortestText(yMin) + ", " + detail::shortestText(yMax) + "]");
 	const double sx = GridGeometry::cellsToCover(xMax - xMin, resolution);
 	const double sy = GridGeometry::cellsToCover(yMax - yMin, resolution);
 	if (sx * sy > static_cast<double>(maxCells) ||
 		std::max(sx, sy) > std::numeric_limits<int>::max())
 		throw std::invalid_argument(
-			"a grid of " + text(sx) + " x " + text(sy) +
+			"a grid of " + detail::shortestText(sx) + " x " + detail::shortestText(sy) +
 			" cells exceeds the budget of " + std::to_string(maxCells) +
 			" cells");
 	m_geometry = {xMin, yMin, resolution, static_cast<int>(sx), static_cast<int>(sy)};
@@ -105,7 +98,7 @@ void EvidentialGridStorage::setDecayRate(double perSecond)
 	if (!(perSecond >= 0.0 && std::isfinite(perSecond)))
 		throw std::invalid_argument(
 			"decay rate must be a finite number >= 0, got " +
-			text(perSecond));
+			detail::shortestText(perSecond));
 	if (perSecond == m_decayRate) return;
 	// Cells decay under the old rate up to now, under the new one from now
 	// on; before the first insertion there is nothing to decay.
