@@ -13,10 +13,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <iomanip>
 #include <limits>
 #include <ostream>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -164,13 +162,6 @@ double logAddExp(double a, double b)
 	return a + std::log1p(std::exp(b - a));
 }
 
-std::string formatValue(double v)
-{
-	std::ostringstream s;
-	s << v;
-	return s.str();
-}
-
 [[noreturn]] void throwInvalid(
 	const std::string& key, const std::string& rule, const std::string& got)
 {
@@ -201,23 +192,23 @@ void CEvidentialGridMap2D::TLikelihoodOptions::validate() const
 {
 	// Written as !(valid) so that NaN fails every test.
 	if (!(occupiedMass > 0.0 && occupiedMass <= 1.0))
-		throwInvalid("occupiedMass", "in (0, 1]", formatValue(occupiedMass));
+		throwInvalid("occupiedMass", "in (0, 1]", detail::shortestText(occupiedMass));
 	if (!(maxCorrsDistance > 0.0 && std::isfinite(maxCorrsDistance)))
 		throwInvalid(
 			"maxCorrsDistance", "> 0 and finite",
-			formatValue(maxCorrsDistance));
+			detail::shortestText(maxCorrsDistance));
 	if (!(sigma > 0.0 && std::isfinite(sigma)))
-		throwInvalid("sigma", "> 0 and finite", formatValue(sigma));
+		throwInvalid("sigma", "> 0 and finite", detail::shortestText(sigma));
 	if (!(zHit >= 0.0 && std::isfinite(zHit)))
-		throwInvalid("zHit", ">= 0 and finite", formatValue(zHit));
+		throwInvalid("zHit", ">= 0 and finite", detail::shortestText(zHit));
 	if (!(zRandom >= 0.0 && std::isfinite(zRandom)))
-		throwInvalid("zRandom", ">= 0 and finite", formatValue(zRandom));
+		throwInvalid("zRandom", ">= 0 and finite", detail::shortestText(zRandom));
 	if (zHit == 0.0 && zRandom == 0.0)
 		throwInvalid("zHit and zRandom", "not both 0", "0 and 0");
 	if (!(maxRange > 0.0 && std::isfinite(maxRange)))
-		throwInvalid("maxRange", "> 0 and finite", formatValue(maxRange));
+		throwInvalid("maxRange", "> 0 and finite", detail::shortestText(maxRange));
 	if (decimation < 1)
-		throwInvalid("decimation", "an integer >= 1", formatValue(decimation));
+		throwInvalid("decimation", "an integer >= 1", detail::shortestText(decimation));
 }
 
 void CEvidentialGridMap2D::TLikelihoodOptions::saveToConfigFile(
