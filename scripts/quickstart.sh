@@ -8,7 +8,8 @@
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-build_dir=${BUILD_DIR:-$here/build}
+# Absolute: the demo runs icp-slam from another folder.
+build_dir=$(realpath -m "${BUILD_DIR:-$here/build}")
 jobs=${JOBS:-2}
 
 packages=(

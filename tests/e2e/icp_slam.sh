@@ -47,6 +47,8 @@ textured_planes() { zcat "$1" | grep -ac CTexturedPlane || true; }
 scenes=("$scratch"/with_map/icp-slam-out/buildingmap_*.3Dscene)
 [ -s "${scenes[-1]}" ] || fail "icp-slam saved no 3-D scene"
 [ "$(textured_planes "${scenes[-1]}")" -gt 0 ] || fail "${scenes[-1]} holds no textured plane"
-[ "$(textured_planes "$scratch/without_map/icp-slam-out/$(basename "${scenes[-1]}")")" -eq 0 ] ||
+without_scene="$scratch/without_map/icp-slam-out/$(basename "${scenes[-1]}")"
+[ -s "$without_scene" ] || fail "the run without the evidential map saved no $(basename "$without_scene")"
+[ "$(textured_planes "$without_scene")" -eq 0 ] ||
 	fail "a textured plane without the evidential map: the check above proves nothing"
 ok "the evidential map is drawn in $(basename "${scenes[-1]}")"

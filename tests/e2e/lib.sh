@@ -52,7 +52,7 @@ run_stock() {
 # The one file matching a glob pattern, or a failure.
 only_file() {
 	local matches=()
-	local f
+	local f IFS=  # expand the pattern's wildcards, not its spaces
 	for f in $1; do
 		[ -e "$f" ] && matches+=("$f")
 	done

@@ -11,9 +11,19 @@ frames=$(cd "$out/frames" && ls)
 contains "$out/summary.txt" "frames: 4 pictures in frames/, one every 50 scans"
 contains "$out/summary.txt" "animation: growth.avi, 22 frames of 320 x 240 at 10 frames/s"
 
-# Frames grow with the map, and the last frame is the map at scan 200.
-run 0 "$EVGRID_CHECK" image "$out/frames/frame_000050_evidential.png"
-[ -n "$(cat "$OUT")" ] || fail "frame 50 unreadable"
+# Frames grow with the map: each covers at least the cells of the one before,
+# and the final picture at least those of the last frame.
+area() {
+  run 0 "$EVGRID_CHECK" image "$1"
+  read -r w h <"$OUT" || fail "$1 unreadable"
+  echo $((w * h))
+}
+previous=0
+for picture in "$out"/frames/frame_{000050,000100,000150,000200}_evidential.png "$out/evidential.png"; do
+  current=$(area "$picture")
+  [ "$current" -ge "$previous" ] || fail "$picture covers $current cells, less than $previous before it"
+  previous=$current
+done
 
 # The video: MJPG in AVI, read back by OpenCV, every frame of the fixed size.
 [ "$(head -c 4 "$out/growth.avi")" = "RIFF" ] || fail "growth.avi is not an AVI file"
