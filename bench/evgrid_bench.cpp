@@ -308,17 +308,9 @@ const char* name(SensorModel m)
 	}
 	return "";
 }
-const char* name(FusionRule r)
+std::string name(FusionRule r)
 {
-	switch (r)
-	{
-		case FusionRule::Conjunctive: return "Conjunctive";
-		case FusionRule::Dempster: return "Dempster";
-		case FusionRule::Yager: return "Yager";
-		case FusionRule::DuboisPrade: return "DuboisPrade";
-		case FusionRule::Cautious: return "Cautious";
-	}
-	return "";
+	return mrpt::typemeta::TEnumType<FusionRule>::value2name(r);
 }
 
 template <typename Fn>

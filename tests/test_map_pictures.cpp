@@ -12,6 +12,7 @@
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>

@@ -15,6 +15,7 @@
 #include <mrpt/serialization/archiveFrom_std_streams.h>
 
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -409,10 +410,10 @@ class CMapBuilder
 
 void writeSummary(
 	std::ostream& os, const TBuildOptions& options, const CMapBuilder& builder,
-	const TBuildStats& stats, const CEvidentialGridMap2D& map)
+	const TBuildStats& stats, const CEvidentialGridMap2D& map,
+	const CEvidentialGridMap2D::TDecisionCounts& counts)
 {
 	const auto& g = map.geometry();
-	const auto counts = map.countDecisions();
 	const double cells = static_cast<double>(g.cellCount());
 	const auto line = [&](const char* what, std::size_t n) {
 		os << "  " << std::left << std::setw(9) << what << std::right
@@ -681,10 +682,11 @@ int runBuild(int argc, char** argv, int first)
 		save("conflict.png");
 	}
 	stats.total = secondsSince(start);
+	const auto counts = map->countDecisions();
 	{
 		const std::string path = out.staged("summary.txt");
 		std::ofstream f(path);
-		writeSummary(f, options, builder, stats, *map);
+		writeSummary(f, options, builder, stats, *map, counts);
 		f.close();
 		if (!f) throw std::runtime_error(path + ": cannot write the summary");
 	}
@@ -694,7 +696,6 @@ int runBuild(int argc, char** argv, int first)
 
 	if (!options.quiet)
 	{
-		const auto counts = map->countDecisions();
 		const auto percent = [&stats](double part) {
 			return std::to_string(static_cast<int>(
 					   std::lround(100.0 * part / stats.total))) +

@@ -26,7 +26,6 @@ class CGrowthAnimation
 	void add(const mrpt::img::CImage& picture);
 	/** Finishes the file. \throws std::runtime_error if nothing was written. */
 	void close();
-	std::size_t frames() const { return m_frames; }
 
    private:
 	std::string m_path;

@@ -38,7 +38,6 @@ class CObjectFileReader
 	/** Share of the file's bytes read so far, in [0, 1] (compressed bytes
 	 * for a compressed file). */
 	double fractionRead() const;
-	const std::string& path() const { return m_path; }
 	bool isCompressed() const;
 
    private:

@@ -24,7 +24,6 @@ class COutputFolder
 	COutputFolder(const COutputFolder&) = delete;
 	COutputFolder& operator=(const COutputFolder&) = delete;
 
-	const std::string& dir() const { return m_dir; }
 	/** Where to write `name` (a file, or a folder such as "frames") during
 	 * the run. */
 	std::string staged(const std::string& name) const;

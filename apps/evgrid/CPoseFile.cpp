@@ -2,13 +2,14 @@
 
 #include "CPoseFile.h"
 
+#include "CommandLine.h"
+
 #include <mrpt/math/wrap2pi.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -18,17 +19,6 @@ namespace evgrid
 {
 namespace
 {
-/** The whole token as a finite number, or nullopt. */
-std::optional<double> toNumber(const std::string& token)
-{
-	errno = 0;
-	char* end = nullptr;
-	const double v = std::strtod(token.c_str(), &end);
-	if (end != token.c_str() + token.size() || errno != 0 || !std::isfinite(v))
-		return std::nullopt;
-	return v;
-}
-
 bool isPlainInteger(const std::string& token)
 {
 	return !token.empty() &&

@@ -2,6 +2,9 @@
 
 #include "CommandLine.h"
 
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 #include <vector>
@@ -63,6 +66,17 @@ std::optional<int> parse(
 	cmd.setOutput(nullptr);
 	if (run) return std::nullopt;
 	return output.failed() ? kExitUsage : 0;
+}
+
+std::optional<double> toNumber(const std::string& text)
+{
+	if (text.empty()) return std::nullopt;
+	errno = 0;
+	char* end = nullptr;
+	const double v = std::strtod(text.c_str(), &end);
+	if (end != text.c_str() + text.size() || errno != 0 || !std::isfinite(v))
+		return std::nullopt;
+	return v;
 }
 
 std::string requireMapFile(const std::string& value)

@@ -35,6 +35,9 @@ std::optional<int> parse(
  *  any word there, options included). */
 std::string requireMapFile(const std::string& value);
 
+/** The whole (non-empty) text as a finite number, or nothing. */
+std::optional<double> toNumber(const std::string& text);
+
 /** Throws UsageError unless `value` >= `minimum`. */
 void requireAtLeast(const std::string& option, int value, int minimum);
 

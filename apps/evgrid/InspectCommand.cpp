@@ -3,12 +3,9 @@
 #include <mrpt/core/Clock.h>
 #include <mrpt/system/datetime.h>
 
-#include <cmath>
-#include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <optional>
-#include <sstream>
 
 #include "CommandLine.h"
 #include "Commands.h"
@@ -32,14 +29,8 @@ std::optional<TPoint> parsePoint(const std::string& text)
 {
 	const auto comma = text.find(',');
 	if (comma == std::string::npos) return std::nullopt;
-	const auto number = [](const std::string& s) -> std::optional<double> {
-		char* end = nullptr;
-		const double v = std::strtod(s.c_str(), &end);
-		if (s.empty() || *end != '\0' || !std::isfinite(v)) return std::nullopt;
-		return v;
-	};
-	const auto x = number(text.substr(0, comma));
-	const auto y = number(text.substr(comma + 1));
+	const auto x = toNumber(text.substr(0, comma));
+	const auto y = toNumber(text.substr(comma + 1));
 	if (!x || !y) return std::nullopt;
 	return TPoint{*x, *y};
 }

@@ -1,7 +1,6 @@
 /* evgrid: build, inspect and export evidential (Dempster-Shafer) occupancy
  * grid maps. `evgrid <subcommand> --help` documents each subcommand. */
 
-#include <cstring>
 #include <iostream>
 #include <string>
 
