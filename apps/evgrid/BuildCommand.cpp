@@ -414,12 +414,6 @@ void writeSummary(
 	const CEvidentialGridMap2D::TDecisionCounts& counts)
 {
 	const auto& g = map.geometry();
-	const double cells = static_cast<double>(g.cellCount());
-	const auto line = [&](const char* what, std::size_t n) {
-		os << "  " << std::left << std::setw(9) << what << std::right
-		   << std::setw(12) << n << "  " << std::fixed << std::setprecision(2)
-		   << std::setw(6) << 100.0 * static_cast<double>(n) / cells << "%\n";
-	};
 	os << "evgrid build summary\n\n"
 	   << "command: " << options.commandLine << "\n"
 	   << "input: " << options.input << "\n"
@@ -460,10 +454,7 @@ void writeSummary(
 	   << "  latest time: " << std::fixed << std::setprecision(6)
 	   << map.latestTime() << " s\n"
 	   << "cells by decision:\n";
-	line("free", counts.free);
-	line("occupied", counts.occupied);
-	line("unknown", counts.unknown);
-	line("conflict", counts.conflict);
+	printDecisionCounts(os, counts, g.cellCount());
 
 	os << std::fixed << std::setprecision(1) << "\ntiming:\n"
 	   << "  total: " << std::setprecision(3) << stats.total << " s, "

@@ -68,8 +68,6 @@ void printCell(const CEvidentialGridMap2D& map, const TPoint& p)
 void printMap(const std::string& path, const CEvidentialGridMap2D& map)
 {
 	const auto& g = map.geometry();
-	const auto counts = map.countDecisions();
-	const double cells = static_cast<double>(g.cellCount());
 	std::cout << std::setprecision(10) << "map: " << path << "\n"
 			  << "x: [" << g.xMin << ", " << g.xMax() << "] m\n"
 			  << "y: [" << g.yMin << ", " << g.yMax() << "] m\n"
@@ -87,16 +85,7 @@ void printMap(const std::string& path, const CEvidentialGridMap2D& map)
 						 mrpt::Clock::fromDouble(map.latestTime()))
 				  << " UTC)\n";
 	std::cout << "cells by decision:\n";
-	const auto line = [&](const char* what, std::size_t n) {
-		std::cout << "  " << std::left << std::setw(9) << what << std::right
-				  << std::setw(12) << n << "  " << std::fixed
-				  << std::setprecision(2) << std::setw(6)
-				  << 100.0 * static_cast<double>(n) / cells << "%\n";
-	};
-	line("free", counts.free);
-	line("occupied", counts.occupied);
-	line("unknown", counts.unknown);
-	line("conflict", counts.conflict);
+	printDecisionCounts(std::cout, map.countDecisions(), g.cellCount());
 	std::cout << std::defaultfloat << "\noptions:\n";
 	map.insertionOptions.dumpToTextStream(std::cout);
 	map.likelihoodOptions.dumpToTextStream(std::cout);

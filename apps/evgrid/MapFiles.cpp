@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <iomanip>
 #include <stdexcept>
 
 #include "CObjectFileReader.h"
@@ -75,6 +76,28 @@ CEvidentialGridMap2D::Ptr loadMap(const std::string& path)
 			path + ": holds a " + object->GetRuntimeClass()->className +
 			", not an evidential grid map");
 	return map;
+}
+
+void printDecisionCounts(
+	std::ostream& os,
+	const mrpt_evidential::CEvidentialGridMap2D::TDecisionCounts& counts,
+	std::size_t cellCount)
+{
+	const auto flags = os.flags();
+	const auto precision = os.precision();
+	const auto line = [&](const char* what, std::size_t n) {
+		os << "  " << std::left << std::setw(9) << what << std::right
+		   << std::setw(12) << n << "  " << std::fixed << std::setprecision(2)
+		   << std::setw(6)
+		   << 100.0 * static_cast<double>(n) / static_cast<double>(cellCount)
+		   << "%\n";
+	};
+	line("free", counts.free);
+	line("occupied", counts.occupied);
+	line("unknown", counts.unknown);
+	line("conflict", counts.conflict);
+	os.flags(flags);
+	os.precision(precision);
 }
 
 }  // namespace evgrid

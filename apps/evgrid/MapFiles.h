@@ -3,7 +3,9 @@
 
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 
+#include <cstddef>
 #include <memory>
+#include <ostream>
 #include <string>
 
 namespace evgrid
@@ -25,5 +27,12 @@ std::unique_ptr<mrpt_evidential::CEvidentialGridMap2D> createMapFromConfig(
  * the file if it cannot be read or does not hold an evidential grid. */
 mrpt_evidential::CEvidentialGridMap2D::Ptr loadMap(
 	const std::string& path);
+
+/** The four lines of a map's cells by decision, each count with its share of
+ * `cellCount`, as `build`'s summary and `inspect` print them. */
+void printDecisionCounts(
+	std::ostream& os,
+	const mrpt_evidential::CEvidentialGridMap2D::TDecisionCounts& counts,
+	std::size_t cellCount);
 
 }  // namespace evgrid
