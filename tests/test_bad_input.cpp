@@ -23,9 +23,12 @@
 #include <tuple>
 #include <vector>
 
+#include "map_bytes.h"
 #include "test_helpers.h"
 
 using namespace mrpt_evidential;
+using mrpt_evidential::test::serialize;
+using mrpt_evidential::test::deserialize;
 using mrpt::obs::CObservation2DRangeScan;
 using mrpt::poses::CPose3D;
 using mrpt::serialization::archiveFrom;
@@ -136,22 +139,6 @@ std::string stderrOf(const std::function<void()>& f)
 	::testing::internal::CaptureStderr();
 	f();
 	return ::testing::internal::GetCapturedStderr();
-}
-
-std::vector<std::uint8_t> serialize(const CEvidentialGridMap2D& map)
-{
-	mrpt::io::CMemoryStream buf;
-	archiveFrom(buf) << map;
-	const auto* p = static_cast<const std::uint8_t*>(buf.getRawBufferData());
-	return {p, p + buf.getTotalBytesCount()};
-}
-
-/** Reads a map from bytes; throws as the archive does. */
-void deserialize(const std::vector<std::uint8_t>& bytes, CEvidentialGridMap2D& map)
-{
-	mrpt::io::CMemoryStream in;
-	in.assignMemoryNotOwn(bytes.data(), bytes.size());
-	archiveFrom(in) >> map;
 }
 
 /** Writes the checksum a stream's payload should have, as a forger would:

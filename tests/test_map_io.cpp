@@ -18,9 +18,12 @@
 #include <string>
 #include <vector>
 
+#include "map_bytes.h"
 #include "test_helpers.h"
 
 using namespace mrpt_evidential;
+using mrpt_evidential::test::serialize;
+using mrpt_evidential::test::deserialize;
 using mrpt::serialization::archiveFrom;
 namespace fs = std::filesystem;
 
@@ -71,24 +74,6 @@ CEvidentialGridMap2D makeMap(double resolution = 0.1)
 		makeScan(1003.25, [](std::size_t i) { return 1.5 + (i % 7) * 0.1; }),
 		mrpt::poses::CPose3D(-0.2, 0.6, 0, -2.0, 0, 0));
 	return map;
-}
-
-std::vector<std::uint8_t> serialize(const CEvidentialGridMap2D& map)
-{
-	mrpt::io::CMemoryStream buf;
-	auto ar = archiveFrom(buf);
-	ar << map;
-	const auto* p = static_cast<const std::uint8_t*>(buf.getRawBufferData());
-	return {p, p + buf.getTotalBytesCount()};
-}
-
-/** Reads a map from bytes into `map`; throws as the archive does. */
-void deserialize(const std::vector<std::uint8_t>& bytes, CEvidentialGridMap2D& map)
-{
-	mrpt::io::CMemoryStream buf;
-	if (!bytes.empty()) buf.assignMemoryNotOwn(bytes.data(), bytes.size());
-	auto ar = archiveFrom(buf);
-	ar >> map;
 }
 
 /** Geometry, options, generic parameters, stamps and every cell equal. */

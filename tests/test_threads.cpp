@@ -22,9 +22,11 @@
 #include <string>
 #include <vector>
 
+#include "map_bytes.h"
 #include "test_helpers.h"
 
 using namespace mrpt_evidential;
+using mrpt_evidential::test::serialize;
 using mrpt::obs::CObservation2DRangeScan;
 using mrpt::poses::CPose3D;
 
@@ -76,14 +78,6 @@ std::vector<std::uint8_t> pixels(const mrpt::img::CImage& img)
 		out.insert(out.end(), line, line + img.getWidth() * img.channelCount());
 	}
 	return out;
-}
-
-std::vector<std::uint8_t> serialize(const CEvidentialGridMap2D& map)
-{
-	mrpt::io::CMemoryStream buf;
-	mrpt::serialization::archiveFrom(buf) << map;
-	const auto* p = static_cast<const std::uint8_t*>(buf.getRawBufferData());
-	return {p, p + buf.getTotalBytesCount()};
 }
 
 /** Everything, and the saved files under `prefix` when it is not empty. */

@@ -17,6 +17,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "../map_bytes.h"
+
 namespace fuzz
 {
 /** A finding: the message, then abort(), which libFuzzer reports as a crash
@@ -122,13 +124,7 @@ inline std::vector<std::uint8_t> frame(const std::uint8_t* payload, std::size_t 
 	return out;
 }
 
-inline std::vector<std::uint8_t> serialize(const mrpt_evidential::CEvidentialGridMap2D& map)
-{
-	mrpt::io::CMemoryStream buf;
-	mrpt::serialization::archiveFrom(buf) << map;
-	const auto* p = static_cast<const std::uint8_t*>(buf.getRawBufferData());
-	return {p, p + buf.getTotalBytesCount()};
-}
+using mrpt_evidential::test::serialize;
 
 /** The fuzz_insert input: map options from table indices and bytes (the
  * options' own checks are fuzz_ini's job), then up to four scans with raw
