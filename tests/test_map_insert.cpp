@@ -311,8 +311,9 @@ TEST(MapInsert, DecayFollowsDataTime)
 		EXPECT_NEAR(m.unknown, 1 - expectedFree, kStoreTol);
 		EXPECT_NEAR(map.latestTime(), t, 1e-6);
 	}
-	// Replaying the same data faster or slower gives the same map: only the
-	// timestamps matter, so the same sequence inserted twice is identical.
+	// Decay follows the scans' timestamps alone, nothing of the run (no wall
+	// clock): the same sequence inserted again gives the same map, cell for
+	// cell.
 	CEvidentialGridMap2D again = makeMap();
 	again.insertionOptions.decayRate = rate;
 	again.insertObservation(first, kRobot);
