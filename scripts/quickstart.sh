@@ -63,6 +63,23 @@ demo() {
   echo "$out/summary.txt describes the run; doc/evgrid.md explains evgrid."
 }
 
+# The tests with the largest peak resident memory, as the memory budget
+# launcher recorded them (tests/support/memory_budget.cpp): the ten largest
+# of the build, the five largest of the sanitizer tree.
+print_memory_peaks() {
+  print_peaks "$build_dir/test-memory" 10 "budget 2048 MB each"
+  print_peaks "$build_dir/tests/reliability/asan/test-memory" 5 \
+    "under AddressSanitizer, budget 6144 MB each"
+}
+print_peaks() {
+  local peaks=("$1"/*.peak)
+  [ -e "${peaks[0]}" ] || return 0
+  echo
+  echo "Largest peak resident memory of a test, MB ($3):"
+  cat "${peaks[@]}" | sort -rn | head -"$2" |
+    awk '{ kb = $1; $1 = ""; printf "  %8.1f %s\n", kb / 1024, $0 }'
+}
+
 case "${1:-}" in
   demo)
     install_dependencies
@@ -76,7 +93,11 @@ case "${1:-}" in
   test)
     install_dependencies
     build
-    ctest --test-dir "$build_dir" --output-on-failure -j"$jobs"
+    rm -f "$build_dir"/test-memory/*.peak "$build_dir"/tests/reliability/asan/test-memory/*.peak
+    status=0
+    ctest --test-dir "$build_dir" --output-on-failure -j"$jobs" || status=$?
+    print_memory_peaks
+    exit $status
     ;;
   *)
     echo "usage: $0 demo|test|build" >&2

@@ -3,6 +3,10 @@
 #include "CObjectFileReader.h"
 
 #include <mrpt/serialization/CArchive.h>
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -10,6 +14,8 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <limits>
 #include <new>
 #include <stdexcept>
@@ -74,8 +80,11 @@ class CObjectFileReader::CZlibArchive : public mrpt::serialization::CArchive
 			if (n <= 0) break;
 			done += static_cast<std::size_t>(n);
 		}
-		if (done < len) m_hitEnd = true;
-		return done;
+		// Whole or nothing: MRPT takes a short read for a complete one as
+		// long as it holds a byte, which would leave a field half read.
+		if (done == len) return done;
+		m_hitEnd = true;
+		return 0;
 	}
 
    private:
@@ -83,7 +92,14 @@ class CObjectFileReader::CZlibArchive : public mrpt::serialization::CArchive
 	bool m_hitEnd = false;
 };
 
-CObjectFileReader::CObjectFileReader(const std::string& path) : m_path(path)
+CObjectFileReader::CObjectFileReader(const std::string& path)
+	: CObjectFileReader(path, Check::None)
+{
+	checkInBoundedChild();
+}
+
+CObjectFileReader::CObjectFileReader(const std::string& path, Check)
+	: m_path(path)
 {
 	std::error_code ec;
 	if (std::filesystem::is_directory(path, ec))
@@ -100,6 +116,134 @@ CObjectFileReader::CObjectFileReader(const std::string& path) : m_path(path)
 }
 
 CObjectFileReader::~CObjectFileReader() = default;
+
+namespace
+{
+/** What the checking child sends before each entry, and once more with
+ * kFailed and the length of the message that follows when one fails. */
+struct TChildRecord
+{
+	static constexpr std::uint64_t kFailed = ~std::uint64_t(0);
+	std::uint64_t entry = 0, offset = 0;
+};
+
+bool writeAll(int fd, const void* data, std::size_t size)
+{
+	const auto* bytes = static_cast<const char*>(data);
+	while (size > 0)
+	{
+		const ssize_t n = ::write(fd, bytes, size);
+		if (n <= 0) return false;
+		bytes += n;
+		size -= static_cast<std::size_t>(n);
+	}
+	return true;
+}
+
+bool readAll(int fd, void* data, std::size_t size)
+{
+	auto* bytes = static_cast<char*>(data);
+	while (size > 0)
+	{
+		const ssize_t n = ::read(fd, bytes, size);
+		if (n <= 0) return false;
+		bytes += n;
+		size -= static_cast<std::size_t>(n);
+	}
+	return true;
+}
+
+std::uint64_t addressSpaceBytes()
+{
+	std::ifstream statm("/proc/self/statm");
+	std::uint64_t pages = 0;
+	statm >> pages;
+	return pages * static_cast<std::uint64_t>(sysconf(_SC_PAGESIZE));
+}
+
+}  // namespace
+
+void CObjectFileReader::checkEntries(const std::string& path, int fd)
+{
+	std::string message;
+	try
+	{
+		CObjectFileReader reader(path, Check::None);
+		for (TChildRecord r;; ++r.entry)
+		{
+			r.offset = reader.nextOffset();
+			if (!writeAll(fd, &r, sizeof(r))) _exit(1);
+			if (!reader.next()) _exit(0);
+		}
+	}
+	catch (const std::exception& e)
+	{
+		message = e.what();
+	}
+	const TChildRecord failed{TChildRecord::kFailed, message.size()};
+	writeAll(fd, &failed, sizeof(failed));
+	writeAll(fd, message.data(), message.size());
+	_exit(0);
+}
+
+void CObjectFileReader::checkInBoundedChild() const
+{
+	int fds[2];
+	if (pipe(fds) != 0)
+		throw std::runtime_error(m_path + ": cannot check the file: pipe(): " + std::strerror(errno));
+	const std::uint64_t budget = kBudgetBaseBytes + kBudgetPerFileByte * m_fileSize;
+	std::fflush(nullptr);
+	const pid_t pid = fork();
+	if (pid < 0)
+		throw std::runtime_error(m_path + ": cannot check the file: fork(): " + std::strerror(errno));
+	if (pid == 0)
+	{
+		::close(fds[0]);
+		// Quiet, without core dumps, and refused any allocation beyond the
+		// budget (MRPT then dies on the null it gets, which the parent sees).
+		const int devNull = ::open("/dev/null", O_WRONLY);
+		if (devNull >= 0)
+		{
+			dup2(devNull, STDOUT_FILENO);
+			dup2(devNull, STDERR_FILENO);
+		}
+		const rlimit noCore{0, 0};
+		setrlimit(RLIMIT_CORE, &noCore);
+		const rlim_t cap = addressSpaceBytes() + budget;
+		const rlimit capped{cap, cap};
+		setrlimit(RLIMIT_AS, &capped);
+		checkEntries(m_path, fds[1]);
+	}
+	::close(fds[1]);
+	TChildRecord last, r;
+	std::string message;
+	bool failed = false;
+	while (readAll(fds[0], &r, sizeof(r)))
+	{
+		if (r.entry == TChildRecord::kFailed)
+		{
+			message.resize(r.offset);
+			failed = readAll(fds[0], message.data(), message.size());
+			break;
+		}
+		last = r;
+	}
+	::close(fds[0]);
+	int status = 0;
+	while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+	{
+	}
+	if (failed) throw std::runtime_error(message);
+	if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return;
+	std::ostringstream why;
+	why << m_path << ": entry " << last.entry << " at byte " << last.offset
+		<< (isCompressed() ? " of the decompressed data" : "")
+		<< ": reading it took more memory than a file of " << m_fileSize
+		<< " bytes can justify (" << budget / (1 << 20)
+		<< " MB): a size in it is corrupted";
+	if (WIFSIGNALED(status)) why << " (MRPT stopped with signal " << WTERMSIG(status) << ")";
+	throw std::runtime_error(why.str());
+}
 
 bool CObjectFileReader::isCompressed() const { return !m_archive->isDirect(); }
 
@@ -121,6 +265,11 @@ void CObjectFileReader::fail(const std::string& why) const
 		m_path + ": entry " + std::to_string(m_entry) + " at byte " +
 		std::to_string(m_entryOffset) +
 		(isCompressed() ? " of the decompressed data" : "") + ": " + printable);
+}
+
+std::uint64_t CObjectFileReader::nextOffset() const
+{
+	return m_archive->decompressedOffset();
 }
 
 mrpt::serialization::CSerializable::Ptr CObjectFileReader::next()

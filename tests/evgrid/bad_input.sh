@@ -40,6 +40,21 @@ expect_failure "$T/damaged-name.rawlog: entry 224 at byte 248416: an object of a
 cp "$T/plain.rawlog" "$T/damaged.rawlog"
 printf '\377\377\377\377\377\377\377\377' | dd of="$T/damaged.rawlog" bs=1 seek=248500 conv=notrunc status=none
 expect_failure "$T/damaged.rawlog: entry 224: cannot insert the scan" -i "$T/damaged.rawlog"
+# Scans that claim 2^31 - 1 and 2^28 rays (SENA's first ray count, 361,
+# overwritten): MRPT allocates 13 bytes per claimed ray before it reads one,
+# 28 GB and 3.5 GB here. evgrid refuses them within the memory a file of this
+# size can justify, and the whole run stays far below a 512 MB budget.
+count_at=$(LC_ALL=C grep -obUaP '\x69\x01\x00\x00' "$T/plain.rawlog" | head -1 | cut -d: -f1)
+[ "$count_at" -lt 300 ] || fail "the first ray count is not where expected (byte $count_at)"
+for claimed in '\377\377\377\177' '\000\000\000\020'; do
+  cp "$T/plain.rawlog" "$T/huge-scan.rawlog"
+  printf "$claimed" | dd of="$T/huge-scan.rawlog" bs=1 seek="$count_at" conv=notrunc status=none
+  run 1 "$MEMORY_BUDGET" --budget-mb 512 -- "$EVGRID" build -i "$T/huge-scan.rawlog" -o "$out"
+  lacks "$ERR" "memory_budget:"
+  contains "$ERR" "evgrid build: error: $T/huge-scan.rawlog: entry 0 at byte 0: reading it took more memory than a file of"
+  contains "$ERR" "a size in it is corrupted"
+  [ "$(fingerprint "$out")" = "$good" ] || fail "the failed run changed $out"
+done
 # Not a rawlog at all.
 printf 'time x y phi\n0 0 0 0\n' >"$T/text.rawlog"
 expect_failure "$T/text.rawlog: entry 0 at byte 0: not a rawlog, simplemap or map saved by MRPT" -i "$T/text.rawlog"
