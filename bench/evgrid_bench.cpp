@@ -17,7 +17,7 @@
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
-#include <mrpt_evidential/PolarToCartesian.h>
+#include "insert/PolarToCartesian.h"
 
 #include <cmath>
 #include <cstdio>

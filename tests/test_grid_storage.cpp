@@ -1,7 +1,7 @@
 /* The grid's storage: fixed-point cells, geometry, growth and lazy decay. */
-#include <mrpt_evidential/EvidentialGridStorage.h>
-#include <mrpt_evidential/QuantizedMass.h>
-#include <mrpt_evidential/combination.h>
+#include <mrpt_evidential/grid/EvidentialGridStorage.h>
+#include <mrpt_evidential/grid/QuantizedMass.h>
+#include <mrpt_evidential/algebra/combination.h>
 
 #include <cmath>
 #include <limits>

@@ -3,7 +3,7 @@
 #pragma once
 
 #include <gtest/gtest.h>
-#include <mrpt_evidential/Mass.h>
+#include <mrpt_evidential/algebra/Mass.h>
 
 #include <atomic>
 #include <cmath>

@@ -1,6 +1,6 @@
 /* Laws of the mass algebra on {F, O}. Built without MRPT: it proves the
  * algebra headers stand alone. */
-#include <mrpt_evidential/combination.h>
+#include <mrpt_evidential/algebra/combination.h>
 
 #include <cmath>
 #include <limits>

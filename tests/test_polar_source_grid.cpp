@@ -1,6 +1,6 @@
 /* The polar SourceGrid of synthetic MRPT scans. */
 #include <mrpt/obs/CObservation2DRangeScan.h>
-#include <mrpt_evidential/CPolarSourceGrid.h>
+#include <mrpt_evidential/scan/CPolarSourceGrid.h>
 
 #include <cmath>
 #include <limits>

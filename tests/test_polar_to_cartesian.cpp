@@ -1,7 +1,7 @@
 /* The polar-to-Cartesian transform against a brute-force reference that looks
  * at every cell of the grid with std::atan2. */
 #include <mrpt/obs/CObservation2DRangeScan.h>
-#include <mrpt_evidential/PolarToCartesian.h>
+#include "insert/PolarToCartesian.h"
 
 #include <cmath>
 #include <map>

@@ -1,6 +1,6 @@
 /* The seed's three lidar sensor models, one sector at a time. */
-#include <mrpt_evidential/SensorModel.h>
-#include <mrpt_evidential/combination.h>
+#include <mrpt_evidential/scan/SensorModel.h>
+#include <mrpt_evidential/algebra/combination.h>
 
 #include <cmath>
 #include <limits>

@@ -9,7 +9,7 @@
 #include <iostream>
 #include <vector>
 
-#include "AtomicFile.h"
+#include <mrpt_evidential/support/AtomicFile.h>
 #include "CommandLine.h"
 #include "Commands.h"
 #include "MapFiles.h"

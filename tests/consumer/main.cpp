@@ -1,10 +1,10 @@
 /* Calls every public function of the foundation through the installed
  * package; exits non-zero on a wrong answer. */
 #include <mrpt/obs/CObservation2DRangeScan.h>
-#include <mrpt_evidential/CPolarSourceGrid.h>
-#include <mrpt_evidential/Mass.h>
-#include <mrpt_evidential/SensorModel.h>
-#include <mrpt_evidential/combination.h>
+#include <mrpt_evidential/scan/CPolarSourceGrid.h>
+#include <mrpt_evidential/algebra/Mass.h>
+#include <mrpt_evidential/scan/SensorModel.h>
+#include <mrpt_evidential/algebra/combination.h>
 
 #include <cmath>
 #include <cstdio>

@@ -4,16 +4,16 @@
 
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/maps/CMetricMap.h>
-#include <mrpt/typemeta/TEnumType.h>
-#include <mrpt_evidential/CPolarSourceGrid.h>
-#include <mrpt_evidential/EvidentialGridStorage.h>
-#include <mrpt_evidential/PolarToCartesian.h>
-#include <mrpt_evidential/combination.h>
+#include <mrpt_evidential/EnumNames.h>
+#include <mrpt_evidential/algebra/combination.h>
+#include <mrpt_evidential/grid/EvidentialGridStorage.h>
+#include <mrpt_evidential/scan/CPolarSourceGrid.h>
 
 #include <cstddef>
 #include <memory>
-#include <mutex>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mrpt::img
@@ -27,48 +27,6 @@ class COccupancyGridMap2D;
 
 namespace mrpt_evidential
 {
-namespace detail
-{
-/** A value guarded by its own mutex. Copying locks the source and gives the
- * copy a fresh mutex, so that the owner stays copyable (as MRPT maps are) and
- * may be copied while other threads read it. */
-template <typename T>
-struct Guarded
-{
-	mutable std::mutex mutex;
-	T value{};
-
-	Guarded() = default;
-	Guarded(const Guarded& o)
-	{
-		std::lock_guard<std::mutex> lock(o.mutex);
-		value = o.value;
-	}
-	Guarded& operator=(const Guarded& o)
-	{
-		if (this != &o)
-		{
-			std::scoped_lock lock(mutex, o.mutex);
-			value = o.value;
-		}
-		return *this;
-	}
-};
-}  // namespace detail
-
-/** What becomes of the conflict a fusion creates (the fusion rule decides
- * how much there is; this decides whether the cell keeps it). */
-enum class ConflictHandling
-{
-	/** The cell keeps it: conflict marks change (something moved), and decay
-	 * fades it like any other evidence. */
-	Keep,
-	/** It becomes ignorance (moved to Omega) after each fusion. */
-	ToUnknown,
-	/** It is removed and the rest renormalized, as Dempster's rule does. */
-	Normalize
-};
-
 /** An evidential (Dempster-Shafer) occupancy grid, an MRPT metric map.
  *
  * Each cell holds a mass function on {F, O} (Mass): free, occupied, unknown
@@ -290,11 +248,22 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 			const std::string& section) const override;
 		/** Prints the keys as saveToConfigFile() writes them. */
 		void dumpToTextStream(std::ostream& out) const override;
-		/** \throws std::invalid_argument naming the first invalid field. */
+		/** The first invalid field, with its rule (angles in radians). The
+		 * sensor model's and polar grid's fields follow their own rules
+		 * (TSourceGridOptions::firstInvalid()), checked for cells of 1 m. */
+		std::optional<TInvalidOption> firstInvalid() const;
+		/** \throws std::invalid_argument describing firstInvalid(). */
 		void validate() const;
 		/** The sector model and polar grid options these options give for a
 		 * grid of the given resolution. */
 		TSourceGridOptions sourceGridOptions(double resolution) const;
+
+	   private:
+		friend class CEvidentialGridMap2D;
+		/** The rules of the fields that only the map uses; insertion checks
+		 * them, then the polar grid checks its own at the grid's resolution,
+		 * so that a scan validates each rule once. */
+		std::optional<TInvalidOption> firstInvalidOfTheMap() const;
 	};
 	TInsertionOptions insertionOptions;
 
@@ -349,7 +318,10 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 			const std::string& section) const override;
 		/** Prints the keys as saveToConfigFile() writes them. */
 		void dumpToTextStream(std::ostream& out) const override;
-		/** \throws std::invalid_argument naming the first invalid field. */
+		/** The first invalid field, with its rule. */
+		std::optional<TInvalidOption> firstInvalid() const;
+		/** \throws std::invalid_argument "likelihoodOpts: " followed by the
+		 *  description of firstInvalid(). */
 		void validate() const;
 	};
 	TLikelihoodOptions likelihoodOptions;
@@ -387,45 +359,33 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 
 	EvidentialGridStorage m_grid;
 	std::size_t m_maxCells = kDefaultMaxCells;
-	/** Scratch space of insertion, kept to avoid allocations. */
-	CPolarSourceGrid m_sourceGrid;
-	CPolarToCartesian m_transform;
 	/** The cell-budget and tilted-scan messages are printed once per map. */
 	bool m_budgetWarningShown = false, m_tiltNoticeShown = false;
 
-	/** The likelihood field: per cell, the distance to the nearest obstacle
-	 * (cut at maxCorrsDistance), and whether the cell was never seen. Built
-	 * on first use under the cache's lock, dropped on every change. */
+	/** What the map keeps beside its cells, not part of its value: the
+	 * insertion's scratch space (a scan's polar grid and its transform) and
+	 * the likelihood field (per cell, the distance to the nearest obstacle,
+	 * built on first use under a lock and dropped on every change). Defined
+	 * in src/map/MapWorkspace.h. */
+	struct TWorkspace;
 	struct LikelihoodField;
-	mutable detail::Guarded<std::shared_ptr<const LikelihoodField>>
-		m_likelihoodCache;
+	/** Owns a TWorkspace. A copy gets scratch space of its own and shares the
+	 * source's likelihood field, read under the source's lock. */
+	class CWorkspace
+	{
+	   public:
+		CWorkspace();
+		CWorkspace(const CWorkspace& other);
+		CWorkspace& operator=(const CWorkspace& other);
+		~CWorkspace();
+		TWorkspace* operator->() const { return m_work.get(); }
+
+	   private:
+		std::unique_ptr<TWorkspace> m_work;
+	};
+	CWorkspace m_workspace;
 	/** Builds the field for the current cells and options. */
 	std::shared_ptr<const LikelihoodField> likelihoodField() const;
 };
 
 }  // namespace mrpt_evidential
-
-MRPT_ENUM_TYPE_BEGIN(mrpt_evidential::SensorModel)
-MRPT_FILL_ENUM_MEMBER(mrpt_evidential::SensorModel, MultiEcho);
-MRPT_FILL_ENUM_MEMBER(mrpt_evidential::SensorModel, ReinforcedMultiEcho);
-MRPT_FILL_ENUM_MEMBER(mrpt_evidential::SensorModel, ImpreciseMultiEcho);
-MRPT_ENUM_TYPE_END()
-
-MRPT_ENUM_TYPE_BEGIN(mrpt_evidential::ImprecisionProfile)
-MRPT_FILL_ENUM_MEMBER(mrpt_evidential::ImprecisionProfile, Box);
-MRPT_FILL_ENUM_MEMBER(mrpt_evidential::ImprecisionProfile, Gaussian);
-MRPT_ENUM_TYPE_END()
-
-MRPT_ENUM_TYPE_BEGIN(mrpt_evidential::FusionRule)
-MRPT_FILL_ENUM_MEMBER(mrpt_evidential::FusionRule, Conjunctive);
-MRPT_FILL_ENUM_MEMBER(mrpt_evidential::FusionRule, Dempster);
-MRPT_FILL_ENUM_MEMBER(mrpt_evidential::FusionRule, Yager);
-MRPT_FILL_ENUM_MEMBER(mrpt_evidential::FusionRule, DuboisPrade);
-MRPT_FILL_ENUM_MEMBER(mrpt_evidential::FusionRule, Cautious);
-MRPT_ENUM_TYPE_END()
-
-MRPT_ENUM_TYPE_BEGIN(mrpt_evidential::ConflictHandling)
-MRPT_FILL_ENUM_MEMBER(mrpt_evidential::ConflictHandling, Keep);
-MRPT_FILL_ENUM_MEMBER(mrpt_evidential::ConflictHandling, ToUnknown);
-MRPT_FILL_ENUM_MEMBER(mrpt_evidential::ConflictHandling, Normalize);
-MRPT_ENUM_TYPE_END()

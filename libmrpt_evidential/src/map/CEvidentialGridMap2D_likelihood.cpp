@@ -20,7 +20,8 @@
 #include <utility>
 #include <vector>
 
-#include "ConfigReading.h"
+#include "map/ConfigReading.h"
+#include "map/MapWorkspace.h"
 
 namespace mrpt_evidential
 {
@@ -162,13 +163,6 @@ double logAddExp(double a, double b)
 	return a + std::log1p(std::exp(b - a));
 }
 
-[[noreturn]] void throwInvalid(
-	const std::string& key, const std::string& rule, const std::string& got)
-{
-	throw std::invalid_argument(
-		"likelihoodOpts: " + key + " must be " + rule + ", got " + got);
-}
-
 }  // namespace
 
 void CEvidentialGridMap2D::TLikelihoodOptions::loadFromConfigFile(
@@ -184,31 +178,40 @@ void CEvidentialGridMap2D::TLikelihoodOptions::loadFromConfigFile(
 	detail::readDouble(source, section, "maxRange", o.maxRange);
 	detail::readCount(source, section, "decimation", o.decimation);
 	detail::readBool(source, section, "unknownAsNeutral", o.unknownAsNeutral);
-	o.validate();
+	if (const auto bad = o.firstInvalid())
+		detail::throwBadValue(
+			section, bad->key,
+			detail::valueText(source, section, bad->key, bad->value),
+			"must be " + bad->rule);
 	*this = o;
+}
+
+std::optional<TInvalidOption> CEvidentialGridMap2D::TLikelihoodOptions::firstInvalid()
+	const
+{
+	// Written as !(valid) so that NaN fails every test.
+	const auto positive = [](double v) { return v > 0.0 && std::isfinite(v); };
+	const auto nonNegative = [](double v) { return v >= 0.0 && std::isfinite(v); };
+	if (!(occupiedMass > 0.0 && occupiedMass <= 1.0))
+		return TInvalidOption{"occupiedMass", "in (0, 1]", occupiedMass};
+	if (!positive(maxCorrsDistance))
+		return TInvalidOption{"maxCorrsDistance", "> 0 and finite", maxCorrsDistance};
+	if (!positive(sigma)) return TInvalidOption{"sigma", "> 0 and finite", sigma};
+	if (!nonNegative(zHit)) return TInvalidOption{"zHit", ">= 0 and finite", zHit};
+	if (!nonNegative(zRandom))
+		return TInvalidOption{"zRandom", ">= 0 and finite", zRandom};
+	if (zHit == 0.0 && zRandom == 0.0)
+		return TInvalidOption{"zHit", "above 0 when zRandom is 0 (not both 0)", zHit};
+	if (!positive(maxRange)) return TInvalidOption{"maxRange", "> 0 and finite", maxRange};
+	if (decimation < 1)
+		return TInvalidOption{"decimation", "an integer >= 1", double(decimation)};
+	return std::nullopt;
 }
 
 void CEvidentialGridMap2D::TLikelihoodOptions::validate() const
 {
-	// Written as !(valid) so that NaN fails every test.
-	if (!(occupiedMass > 0.0 && occupiedMass <= 1.0))
-		throwInvalid("occupiedMass", "in (0, 1]", detail::shortestText(occupiedMass));
-	if (!(maxCorrsDistance > 0.0 && std::isfinite(maxCorrsDistance)))
-		throwInvalid(
-			"maxCorrsDistance", "> 0 and finite",
-			detail::shortestText(maxCorrsDistance));
-	if (!(sigma > 0.0 && std::isfinite(sigma)))
-		throwInvalid("sigma", "> 0 and finite", detail::shortestText(sigma));
-	if (!(zHit >= 0.0 && std::isfinite(zHit)))
-		throwInvalid("zHit", ">= 0 and finite", detail::shortestText(zHit));
-	if (!(zRandom >= 0.0 && std::isfinite(zRandom)))
-		throwInvalid("zRandom", ">= 0 and finite", detail::shortestText(zRandom));
-	if (zHit == 0.0 && zRandom == 0.0)
-		throwInvalid("zHit and zRandom", "not both 0", "0 and 0");
-	if (!(maxRange > 0.0 && std::isfinite(maxRange)))
-		throwInvalid("maxRange", "> 0 and finite", detail::shortestText(maxRange));
-	if (decimation < 1)
-		throwInvalid("decimation", "an integer >= 1", detail::shortestText(decimation));
+	if (const auto bad = firstInvalid())
+		throw std::invalid_argument("likelihoodOpts: " + bad->describe());
 }
 
 void CEvidentialGridMap2D::TLikelihoodOptions::saveToConfigFile(
@@ -236,8 +239,8 @@ void CEvidentialGridMap2D::TLikelihoodOptions::dumpToTextStream(
 
 void CEvidentialGridMap2D::invalidateLikelihoodCache()
 {
-	std::lock_guard<std::mutex> lock(m_likelihoodCache.mutex);
-	m_likelihoodCache.value.reset();
+	std::lock_guard<std::mutex> lock(m_workspace->likelihoodMutex);
+	m_workspace->likelihood.reset();
 }
 
 std::shared_ptr<const CEvidentialGridMap2D::LikelihoodField>
@@ -245,10 +248,10 @@ std::shared_ptr<const CEvidentialGridMap2D::LikelihoodField>
 {
 	// The lock is held while building: threads that ask at the same time wait
 	// for the one build instead of each making its own.
-	std::lock_guard<std::mutex> lock(m_likelihoodCache.mutex);
+	std::lock_guard<std::mutex> lock(m_workspace->likelihoodMutex);
+	std::shared_ptr<const LikelihoodField>& cached = m_workspace->likelihood;
 	const TLikelihoodOptions& opts = likelihoodOptions;
-	if (m_likelihoodCache.value && m_likelihoodCache.value->builtWith(opts))
-		return m_likelihoodCache.value;
+	if (cached && cached->builtWith(opts)) return cached;
 	opts.validate();
 
 	const GridGeometry& map = m_grid.geometry();
@@ -354,8 +357,8 @@ std::shared_ptr<const CEvidentialGridMap2D::LikelihoodField>
 		}
 	}
 
-	m_likelihoodCache.value = field;
-	return m_likelihoodCache.value;
+	cached = field;
+	return cached;
 }
 
 /* Only CObservation2DRangeScan is scored: any other observation gives 0 (a

@@ -1,6 +1,6 @@
 /* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT. */
 
-#include "AtomicFile.h"
+#include <mrpt_evidential/support/AtomicFile.h>
 
 #include <atomic>
 #include <cerrno>

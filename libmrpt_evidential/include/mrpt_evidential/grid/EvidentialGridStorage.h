@@ -1,85 +1,19 @@
 /* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
- * Storage of an evidential grid: geometry, 8-byte cells and lazy decay.
- * Standard library only; the MRPT map class is built on it. */
+ * Storage of an evidential grid: 8-byte cells, their lazy decay and the
+ * fusions that update them. Standard library only; the MRPT map class is
+ * built on it. */
 #pragma once
 
-#include <mrpt_evidential/Mass.h>
-#include <mrpt_evidential/QuantizedMass.h>
+#include <mrpt_evidential/algebra/combination.h>
+#include <mrpt_evidential/grid/GridGeometry.h>
+#include <mrpt_evidential/grid/QuantizedMass.h>
 
-#include <algorithm>
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 namespace mrpt_evidential
 {
-/** Where the cells of a grid lie. Cell (cx, cy) covers
- * [xMin + cx res, xMin + (cx + 1) res) x [yMin + cy res, yMin + (cy + 1) res). */
-struct GridGeometry
-{
-	double xMin = 0.0, yMin = 0.0, resolution = 0.1;
-	int sizeX = 0, sizeY = 0;
-
-	/** Limits of every grid: bounds within kMaxCoordinate metres of the
-	 * origin, cells of kMinResolution to kMaxResolution metres. Beyond them
-	 * cell centres lose their precision, and squared distances overflow. */
-	static constexpr double kMaxCoordinate = 1e9;
-	static constexpr double kMinResolution = 1e-6, kMaxResolution = 1e6;
-	/** True when the bounds and resolution are within the limits (NaN is
-	 * not). */
-	static bool withinLimits(
-		double xMin, double xMax, double yMin, double yMax, double resolution)
-	{
-		const auto near = [](double v) {
-			return v >= -kMaxCoordinate && v <= kMaxCoordinate;
-		};
-		return resolution >= kMinResolution && resolution <= kMaxResolution &&
-			near(xMin) && near(xMax) && near(yMin) && near(yMax);
-	}
-
-	/** Number of cells needed to cover `length` metres, at least 1 (a
-	 * length within a billionth of a cell above a whole number of cells
-	 * needs that number). */
-	static double cellsToCover(double length, double resolution)
-	{
-		return std::max(1.0, std::ceil(length / resolution - 1e-9));
-	}
-
-	double xMax() const { return xMin + sizeX * resolution; }
-	double yMax() const { return yMin + sizeY * resolution; }
-	std::size_t cellCount() const
-	{
-		return static_cast<std::size_t>(sizeX) * static_cast<std::size_t>(sizeY);
-	}
-	/** Column of x; may be outside [0, sizeX) (far away or NaN: an int's
-	 * smallest or largest value). */
-	int cellX(double x) const { return floorToInt((x - xMin) / resolution); }
-	int cellY(double y) const { return floorToInt((y - yMin) / resolution); }
-	/** floor(v), saturated to an int: a plain cast of a larger value is
-	 * undefined behaviour. NaN gives the smallest int. */
-	static int floorToInt(double v)
-	{
-		constexpr double lo = std::numeric_limits<int>::min();
-		constexpr double hi = std::numeric_limits<int>::max();
-		const double f = std::floor(v);
-		if (f >= hi) return std::numeric_limits<int>::max();
-		return f >= lo ? static_cast<int>(f) : std::numeric_limits<int>::min();
-	}
-	double cellCenterX(int cx) const { return xMin + (cx + 0.5) * resolution; }
-	double cellCenterY(int cy) const { return yMin + (cy + 0.5) * resolution; }
-	bool inside(int cx, int cy) const
-	{
-		return cx >= 0 && cy >= 0 && cx < sizeX && cy < sizeY;
-	}
-	std::size_t index(int cx, int cy) const
-	{
-		return static_cast<std::size_t>(cy) * static_cast<std::size_t>(sizeX) +
-			static_cast<std::size_t>(cx);
-	}
-};
-
 /** The cells of an evidential grid with their decay.
  *
  * Decay is classical discounting with rate 1 - exp(-decayRate dt) after dt
@@ -149,16 +83,48 @@ class EvidentialGridStorage
 		c.stamp = m_currentStamp;
 	}
 
-	/** Raw access for insertion kernels that fuse in place: they must leave
-	 * a consistent cell stamped with currentStamp(), its masses decayed with
-	 * decayFactor() of its old stamp before fusion. */
-	QuantizedCell& rawCell(std::size_t idx) { return m_cells[idx]; }
-
-	/** exp(-decayRate (latestTime - time of stamp)). */
-	double decayFactor(std::uint16_t stamp) const
+	/** @name Fusing evidence into cells
+	 * Each decays cell idx (< cellCount()) from its stamp to the current
+	 * insertion, fuses `observed` into it and stamps it with the current
+	 * insertion, so that a cell is always decayed exactly once for the time
+	 * it spent unchanged. Fuse a cell at most once per insertion.
+	 * @{ */
+	/** With any rule and conflict handling: read, combine, write. */
+	void fuse(
+		std::size_t idx, const Mass& observed, FusionRule rule,
+		ConflictHandling handling)
 	{
-		return m_decayRate == 0.0 ? 1.0 : m_presentGain * m_stampGain[stamp];
+		write(idx, handleConflict(combine(rule, read(idx), observed), handling));
 	}
+	/** The conjunctive rule keeping the conflict (the default), computed on
+	 * the stored values: fuse() without its generality. */
+	void fuseConjunctive(std::size_t idx, const Mass& observed)
+	{
+		QuantizedCell& c = m_cells[idx];
+		const double d = decayFactor(c.stamp);
+		const double e = c.conflict * d, f = c.free * d, o = c.occupied * d;
+		const double u = kMassScale - e - f - o;
+		const double of = observed.free, oo = observed.occupied,
+					 ou = observed.unknown;
+		encodeScaled(
+			c, e + observed.conflict * (kMassScale - e) + f * oo + o * of,
+			f * (of + ou) + u * of, o * (oo + ou) + u * oo);
+		c.stamp = m_currentStamp;
+	}
+	/** fuseConjunctive() with the simple free mass m(F) = w, the mass of the
+	 * bulk of a scan's cells, in single precision (the compiler runs it on
+	 * four cells at once): a float holds a stored value to 1/256 of a step. */
+	void fuseSimpleFree(std::size_t idx, float w)
+	{
+		QuantizedCell& c = m_cells[idx];
+		const auto d = static_cast<float>(decayFactor(c.stamp));
+		const float e = c.conflict * d, f = c.free * d, o = c.occupied * d;
+		const float u = static_cast<float>(kMassScale) - e - f - o;
+		encodeScaled(c, e + o * w, f + u * w, o - o * w);
+		c.stamp = m_currentStamp;
+	}
+	/** @} */
+
 	/** A stored mass discounted by a decay factor. */
 	static Mass decayed(const QuantizedCell& c, double factor)
 	{
@@ -169,10 +135,9 @@ class EvidentialGridStorage
 			m.unknown * factor + (1.0 - factor)};
 	}
 
-	/** Raw access, for serialization and fast loops. */
+	/** The stored cells and stamp times, read-only (serialization, tests). */
 	const std::vector<QuantizedCell>& cells() const { return m_cells; }
 	const std::vector<double>& stampTimes() const { return m_stampTimes; }
-	std::uint16_t currentStamp() const { return m_currentStamp; }
 
 	/** Replaces the whole state with one read from a file.
 	 * \throws std::invalid_argument if the pieces do not fit together (a
@@ -185,6 +150,11 @@ class EvidentialGridStorage
 		double decayRate);
 
    private:
+	/** exp(-decayRate (latestTime - time of stamp)). */
+	double decayFactor(std::uint16_t stamp) const
+	{
+		return m_decayRate == 0.0 ? 1.0 : m_presentGain * m_stampGain[stamp];
+	}
 	/** Decays every cell to time `to` (>= every stamp's time) and makes it
 	 * the only stamp. */
 	void rebaseStamps(double to);

@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "AtomicFile.h"
-#include "NumberText.h"
+#include <mrpt_evidential/support/AtomicFile.h>
+#include <mrpt_evidential/support/NumberText.h>
 
 using namespace mrpt_evidential;
 using mrpt_evidential::detail::writeFileAtomically;

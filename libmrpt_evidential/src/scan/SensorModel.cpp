@@ -1,9 +1,9 @@
 /* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT. */
 
-#include <mrpt_evidential/SensorModel.h>
-#include <mrpt_evidential/combination.h>
+#include <mrpt_evidential/scan/SensorModel.h>
+#include <mrpt_evidential/algebra/combination.h>
 
-#include "SectorRow.h"
+#include "scan/SectorRow.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,19 +12,20 @@
 
 namespace mrpt_evidential
 {
+std::optional<TInvalidOption> SensorModelParams::firstInvalid() const
+{
+	// Written as !(valid) so that NaN fails every test.
+	const auto inUnitInterval = [](double v) { return v >= 0.0 && v <= 1.0; };
+	if (!inUnitInterval(muF)) return TInvalidOption{"muF", "in [0, 1]", muF};
+	if (!inUnitInterval(muO)) return TInvalidOption{"muO", "in [0, 1]", muO};
+	if (!(imprecision >= 0.0 && std::isfinite(imprecision)))
+		return TInvalidOption{"imprecision", "a finite number >= 0 (m)", imprecision};
+	return std::nullopt;
+}
+
 void SensorModelParams::validate() const
 {
-	const auto inUnitInterval = [](double v) { return v >= 0.0 && v <= 1.0; };
-	if (!inUnitInterval(muF))
-		throw std::invalid_argument(
-			"muF must be in [0, 1], got " + std::to_string(muF));
-	if (!inUnitInterval(muO))
-		throw std::invalid_argument(
-			"muO must be in [0, 1], got " + std::to_string(muO));
-	if (!(imprecision >= 0.0 && std::isfinite(imprecision)))
-		throw std::invalid_argument(
-			"imprecision must be a finite number >= 0, got " +
-			std::to_string(imprecision));
+	if (const auto bad = firstInvalid()) throw std::invalid_argument(bad->describe());
 }
 
 namespace

@@ -18,7 +18,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "NumberText.h"
+#include <mrpt_evidential/support/NumberText.h>
 
 namespace mrpt_evidential::detail
 {

@@ -1,13 +1,13 @@
 /* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT. */
 
-#include <mrpt_evidential/EvidentialGridStorage.h>
+#include <mrpt_evidential/grid/EvidentialGridStorage.h>
 
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
-#include "NumberText.h"
+#include <mrpt_evidential/support/NumberText.h>
 
 namespace mrpt_evidential
 {
@@ -21,25 +21,11 @@ void EvidentialGridStorage::reset(
 	double xMin, double xMax, double yMin, double yMax, double resolution,
 	std::size_t maxCells)
 {
-	if (!(resolution >= GridGeometry::kMinResolution &&
-		  resolution <= GridGeometry::kMaxResolution))
-		throw std::invalid_argument(
-			"resolution must be in [1e-6, 1e6] m, got " + detail::shortestText(resolution));
-	if (!GridGeometry::withinLimits(xMin, xMax, yMin, yMax, resolution))
-		throw std::invalid_argument(
-			"grid bounds must be numbers within 1e9 m of the origin");
-	if (!(xMin < xMax) || !(yMin < yMax))
-		throw std::invalid_argument(
-			"grid bounds need min < max, got x [" + detail::shortestText(xMin) + ", " + detail::shortestText(xMax) +
-			"] y [" + detail::shortestText(yMin) + ", " + detail::shortestText(yMax) + "]");
+	if (const auto bad = GridGeometry::firstInvalid(
+			xMin, xMax, yMin, yMax, resolution, maxCells))
+		throw std::invalid_argument("grid: " + bad->describe());
 	const double sx = GridGeometry::cellsToCover(xMax - xMin, resolution);
 	const double sy = GridGeometry::cellsToCover(yMax - yMin, resolution);
-	if (sx * sy > static_cast<double>(maxCells) ||
-		std::max(sx, sy) > std::numeric_limits<int>::max())
-		throw std::invalid_argument(
-			"a grid of " + detail::shortestText(sx) + " x " + detail::shortestText(sy) +
-			" cells exceeds the budget of " + std::to_string(maxCells) +
-			" cells");
 	m_geometry = {xMin, yMin, resolution, static_cast<int>(sx), static_cast<int>(sy)};
 	m_cells.assign(m_geometry.cellCount(), QuantizedCell{});
 	m_stampTimes.assign(1, 0.0);

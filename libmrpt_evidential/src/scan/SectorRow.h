@@ -3,7 +3,7 @@
  * sectorMasses() (which expands it). */
 #pragma once
 
-#include <mrpt_evidential/SensorModel.h>
+#include <mrpt_evidential/scan/SensorModel.h>
 
 #include <vector>
 

@@ -1,7 +1,7 @@
 /* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT. */
 
 #include <mrpt/poses/CPose3D.h>
-#include <mrpt_evidential/PolarToCartesian.h>
+#include "insert/PolarToCartesian.h"
 
 namespace mrpt_evidential
 {

@@ -3,7 +3,7 @@
  * and a time stamp. Header-only, standard library only. */
 #pragma once
 
-#include <mrpt_evidential/Mass.h>
+#include <mrpt_evidential/algebra/Mass.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -55,6 +55,24 @@ inline void encodeMass(const Mass& m, QuantizedCell& c) noexcept
 		std::uint32_t& largest = f >= o ? (f >= e ? f : e) : (o >= e ? o : e);
 		largest -= std::min(largest, e + f + o - limit);
 	}
+	c.conflict = static_cast<std::uint16_t>(e);
+	c.free = static_cast<std::uint16_t>(f);
+	c.occupied = static_cast<std::uint16_t>(o);
+}
+
+/** Stores conflict, free and occupied masses given in stored units (times
+ * kMassScale), rounded to nearest without branches, so that loops of it
+ * vectorize. The values are fused masses: each within [0, kMassScale] and
+ * the three summing to at most kMassScale, up to rounding errors far below
+ * half a step; the clamps absorb those errors, so the stored values never
+ * exceed the scale together. The stamp is left alone. */
+template <typename Real>
+inline void encodeScaled(QuantizedCell& c, Real conflict, Real free, Real occupied) noexcept
+{
+	constexpr int kScale = static_cast<int>(kMassScale);
+	const int e = static_cast<int>(conflict + Real(0.5));
+	const int o = std::min(static_cast<int>(occupied + Real(0.5)), kScale - e);
+	const int f = std::min(static_cast<int>(free + Real(0.5)), kScale - e - o);
 	c.conflict = static_cast<std::uint16_t>(e);
 	c.free = static_cast<std::uint16_t>(f);
 	c.occupied = static_cast<std::uint16_t>(o);

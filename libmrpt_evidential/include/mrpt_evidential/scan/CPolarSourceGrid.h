@@ -3,10 +3,11 @@
  * each row built by a sector model (SensorModel.h). */
 #pragma once
 
-#include <mrpt_evidential/Mass.h>
-#include <mrpt_evidential/SensorModel.h>
+#include <mrpt_evidential/algebra/Mass.h>
+#include <mrpt_evidential/scan/SensorModel.h>
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace mrpt::obs
@@ -34,7 +35,9 @@ struct TSourceGridOptions
 	 * maxRange, like COccupancyGridMap2D's considerInvalidRangesAsFreeSpace. */
 	bool invalidRangesAsFree = false;
 
-	/** \throws std::invalid_argument naming the first option out of range. */
+	/** The first option out of range, the sensor model's first. */
+	std::optional<TInvalidOption> firstInvalid() const;
+	/** \throws std::invalid_argument describing firstInvalid(). */
 	void validate() const;
 };
 

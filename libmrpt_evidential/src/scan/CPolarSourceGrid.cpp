@@ -1,7 +1,7 @@
 /* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT. */
 
 #include <mrpt/obs/CObservation2DRangeScan.h>
-#include <mrpt_evidential/CPolarSourceGrid.h>
+#include <mrpt_evidential/scan/CPolarSourceGrid.h>
 
 #include <algorithm>
 #include <cmath>
@@ -9,28 +9,29 @@
 #include <stdexcept>
 #include <string>
 
-#include "SectorRow.h"
+#include "scan/SectorRow.h"
 
 namespace mrpt_evidential
 {
+std::optional<TInvalidOption> TSourceGridOptions::firstInvalid() const
+{
+	if (auto bad = sensorModel.firstInvalid()) return bad;
+	if (!(sectorWidth >= 0.0 && sectorWidth <= 2 * M_PI))
+		return TInvalidOption{
+			"sectorWidth", "in [0, 2 pi] rad (0 to 360 degrees)", sectorWidth};
+	if (!(maxRange > 0.0 && std::isfinite(maxRange)))
+		return TInvalidOption{"maxRange", "a finite number > 0 (m)", maxRange};
+	if (!(binSize > 0.0 && std::isfinite(binSize)))
+		return TInvalidOption{"binSize", "a finite number > 0 (m)", binSize};
+	if (maxRange / binSize > 1e7)
+		return TInvalidOption{
+			"maxRange", "at most 1e7 range bins long (maxRange / bin size)", maxRange};
+	return std::nullopt;
+}
+
 void TSourceGridOptions::validate() const
 {
-	sensorModel.validate();
-	if (!(sectorWidth >= 0.0 && sectorWidth <= 2 * M_PI))
-		throw std::invalid_argument(
-			"sectorWidth must be in [0, 2 pi] rad, got " +
-			std::to_string(sectorWidth));
-	if (!(maxRange > 0.0 && std::isfinite(maxRange)))
-		throw std::invalid_argument(
-			"maxRange must be a positive finite number, got " +
-			std::to_string(maxRange));
-	if (!(binSize > 0.0 && std::isfinite(binSize)))
-		throw std::invalid_argument(
-			"range bin size must be a positive finite number, got " +
-			std::to_string(binSize));
-	if (maxRange / binSize > 1e7)
-		throw std::invalid_argument(
-			"maxRange / bin size gives more than 1e7 bins per sector");
+	if (const auto bad = firstInvalid()) throw std::invalid_argument(bad->describe());
 }
 
 void CPolarSourceGrid::build(

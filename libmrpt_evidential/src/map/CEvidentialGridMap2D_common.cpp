@@ -11,7 +11,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "ConfigReading.h"
+#include "map/ConfigReading.h"
+#include "map/MapWorkspace.h"
 
 using namespace mrpt_evidential;
 using mrpt_evidential::detail::enumName;
@@ -49,45 +50,23 @@ void CEvidentialGridMap2D::TMapDefinition::loadFromConfigFile_map_specific(
 	detail::readDouble(source, section, "max_y", max_y);
 	detail::readDouble(source, section, "resolution", resolution);
 	detail::readCount(source, section, "maxCells", maxCells);
-	const auto text = [&](const std::string& key, double value) {
-		return detail::valueText(source, section, key, value);
-	};
-	if (!(resolution >= GridGeometry::kMinResolution &&
-		  resolution <= GridGeometry::kMaxResolution))
-		detail::throwBadValue(
-			section, "resolution", text("resolution", resolution),
-			"must be in [1e-6, 1e6] m");
-	for (const auto& [key, value] :
-		 {std::pair("min_x", min_x), {"max_x", max_x}, {"min_y", min_y},
-		  {"max_y", max_y}})
-		if (!(std::abs(value) <= GridGeometry::kMaxCoordinate))
-			detail::throwBadValue(
-				section, key, text(key, value), "must be within 1e9 m of the origin");
-	if (!(min_x < max_x))
-		detail::throwBadValue(
-			section, "min_x", text("min_x", min_x),
-			"must be below max_x (" + text("max_x", max_x) + ")");
-	if (!(min_y < max_y))
-		detail::throwBadValue(
-			section, "min_y", text("min_y", min_y),
-			"must be below max_y (" + text("max_y", max_y) + ")");
-	if (maxCells == 0)
-		detail::throwBadValue(section, "maxCells", text("maxCells", 0), "must be > 0");
-	const double cells =
-		GridGeometry::cellsToCover(max_x - min_x, resolution) *
-		GridGeometry::cellsToCover(max_y - min_y, resolution);
-	if (cells > static_cast<double>(maxCells))
+	if (const auto bad = GridGeometry::firstInvalid(
+			min_x, max_x, min_y, max_y, resolution, maxCells))
 	{
-		std::string geometry;
-		for (const auto& [key, value] :
-			 {std::pair("min_x", min_x), {"max_x", max_x}, {"min_y", min_y},
-			  {"max_y", max_y}, {"resolution", resolution}})
-			geometry += std::string(geometry.empty() ? "" : ", ") + key + " = '" +
-				text(key, value) + "'";
-		detail::throwBadValue(
-			section, "maxCells", text("maxCells", static_cast<double>(maxCells)),
-			"is below the " + detail::shortestText(cells) + " cells of the grid (" +
-				geometry + ")");
+		const auto text = [&](const std::string& key, double value) {
+			return detail::valueText(source, section, key, value);
+		};
+		std::string expected = "must be " + bad->rule;
+		// A grid over its budget: the keys that make it, as the file gives them.
+		if (bad->key == "maxCells" && maxCells > 0)
+		{
+			expected += ":";
+			for (const auto& [key, value] :
+				 {std::pair("min_x", min_x), {"max_x", max_x}, {"min_y", min_y},
+				  {"max_y", max_y}, {"resolution", resolution}})
+				expected += std::string(" ") + key + " = '" + text(key, value) + "'";
+		}
+		detail::throwBadValue(section, bad->key, text(bad->key, bad->value), expected);
 	}
 
 	insertionOpts.loadFromConfigFile(source, sectionNamePrefix + "_insertOpts");
@@ -120,6 +99,31 @@ mrpt::maps::CMetricMap* CEvidentialGridMap2D::internal_CreateFromMapDefinition(
 	map->likelihoodOptions = d.likelihoodOpts;
 	return map.release();
 }
+
+CEvidentialGridMap2D::CWorkspace::CWorkspace()
+	: m_work(std::make_unique<TWorkspace>())
+{
+}
+
+CEvidentialGridMap2D::CWorkspace::CWorkspace(const CWorkspace& other)
+	: CWorkspace()
+{
+	std::lock_guard<std::mutex> lock(other->likelihoodMutex);
+	m_work->likelihood = other->likelihood;
+}
+
+CEvidentialGridMap2D::CWorkspace& CEvidentialGridMap2D::CWorkspace::operator=(
+	const CWorkspace& other)
+{
+	if (this != &other)
+	{
+		std::scoped_lock lock(m_work->likelihoodMutex, other->likelihoodMutex);
+		m_work->likelihood = other->likelihood;
+	}
+	return *this;
+}
+
+CEvidentialGridMap2D::CWorkspace::~CWorkspace() = default;
 
 CEvidentialGridMap2D::CEvidentialGridMap2D(
 	double min_x, double max_x, double min_y, double max_y, double resolution)
@@ -221,68 +225,52 @@ float CEvidentialGridMap2D::compute3DMatchingRatio(
 
 namespace
 {
-/** The first invalid insertion option: its .ini key, what it must be, and
- * its value as the .ini file gives it (angles in degrees). */
-struct InvalidOption
-{
-	std::string key, rule;
-	double value;
-};
-
 template <typename Enum>
 bool isMember(Enum value)
 {
 	std::string name;
 	return mrpt::typemeta::TEnumType<Enum>::getBimap().direct(value, name);
 }
+}  // namespace
 
-std::optional<InvalidOption> firstInvalid(
-	const CEvidentialGridMap2D::TInsertionOptions& o)
+std::optional<TInvalidOption>
+	CEvidentialGridMap2D::TInsertionOptions::firstInvalidOfTheMap() const
 {
-	const double toDegrees = 180.0 / M_PI;
-	const auto unit = [](double v) { return v >= 0.0 && v <= 1.0; };
 	// Written as !(valid) so that NaN fails every test.
-	if (!isMember(o.sensorModel))
-		return InvalidOption{"sensorModel", "a known model", double(o.sensorModel)};
-	if (!unit(o.muF)) return InvalidOption{"muF", "in [0, 1]", o.muF};
-	if (!unit(o.muO)) return InvalidOption{"muO", "in [0, 1]", o.muO};
-	if (!(o.imprecision >= 0.0 && std::isfinite(o.imprecision)))
-		return InvalidOption{"imprecision", "a finite number >= 0 (m)", o.imprecision};
-	if (!isMember(o.imprecisionProfile))
-		return InvalidOption{
-			"imprecisionProfile", "a known profile", double(o.imprecisionProfile)};
-	if (!(o.sectorWidth >= 0.0 && o.sectorWidth <= 2 * M_PI))
-		return InvalidOption{
-			"sectorWidth", "in [0, 360] degrees", o.sectorWidth * toDegrees};
-	if (!(o.maxRange > 0.0 && std::isfinite(o.maxRange)))
-		return InvalidOption{"maxRange", "a finite number > 0 (m)", o.maxRange};
-	if (!isMember(o.fusionRule))
-		return InvalidOption{"fusionRule", "a known rule", double(o.fusionRule)};
-	if (!(o.decayRate >= 0.0 && std::isfinite(o.decayRate)))
-		return InvalidOption{
-			"decayRate", "a finite number >= 0 (per second)", o.decayRate};
-	if (!(o.horizontalTolerance >= 0.0 && o.horizontalTolerance <= M_PI / 2))
-		return InvalidOption{
-			"horizontalTolerance", "in [0, 90] degrees",
-			o.horizontalTolerance * toDegrees};
-	if (!isMember(o.conflictHandling))
-		return InvalidOption{
-			"conflictHandling", "a known handling", double(o.conflictHandling)};
-	if (!(o.growthMargin >= 0.0 && std::isfinite(o.growthMargin)))
-		return InvalidOption{
-			"growthMargin", "a finite number >= 0 (m)", o.growthMargin};
+	if (!isMember(sensorModel))
+		return TInvalidOption{"sensorModel", "a known model", double(sensorModel)};
+	if (!isMember(imprecisionProfile))
+		return TInvalidOption{
+			"imprecisionProfile", "a known profile", double(imprecisionProfile)};
+	if (!isMember(fusionRule))
+		return TInvalidOption{"fusionRule", "a known rule", double(fusionRule)};
+	if (!(decayRate >= 0.0 && std::isfinite(decayRate)))
+		return TInvalidOption{
+			"decayRate", "a finite number >= 0 (per second)", decayRate};
+	if (!(horizontalTolerance >= 0.0 && horizontalTolerance <= M_PI / 2))
+		return TInvalidOption{
+			"horizontalTolerance", "in [0, pi/2] rad (0 to 90 degrees)",
+			horizontalTolerance};
+	if (!isMember(conflictHandling))
+		return TInvalidOption{
+			"conflictHandling", "a known handling", double(conflictHandling)};
+	if (!(growthMargin >= 0.0 && std::isfinite(growthMargin)))
+		return TInvalidOption{"growthMargin", "a finite number >= 0 (m)", growthMargin};
 	return std::nullopt;
 }
-}  // namespace
+
+std::optional<TInvalidOption> CEvidentialGridMap2D::TInsertionOptions::firstInvalid()
+	const
+{
+	if (auto bad = firstInvalidOfTheMap()) return bad;
+	// The sensor model's and the polar grid's rules, for cells of 1 m (the
+	// grid's own size is checked at each scan).
+	return sourceGridOptions(1.0).firstInvalid();
+}
 
 void CEvidentialGridMap2D::TInsertionOptions::validate() const
 {
-	if (const auto bad = firstInvalid(*this))
-		throw std::invalid_argument(
-			bad->key + " must be " + bad->rule + ", got " +
-			detail::shortestText(bad->value));
-	// What the polar grid adds (e.g. at most 1e7 range bins of 1 m).
-	sourceGridOptions(1.0).validate();
+	if (const auto bad = firstInvalid()) throw std::invalid_argument(bad->describe());
 }
 
 TSourceGridOptions CEvidentialGridMap2D::TInsertionOptions::sourceGridOptions(
@@ -320,19 +308,11 @@ void CEvidentialGridMap2D::TInsertionOptions::loadFromConfigFile(
 	detail::readEnum(source, section, "conflictHandling", o.conflictHandling);
 	detail::readDouble(source, section, "growthMargin", o.growthMargin);
 	// The value in the message is the text of the file, as the user wrote it.
-	if (const auto bad = firstInvalid(o))
+	if (const auto bad = o.firstInvalid())
 		detail::throwBadValue(
 			section, bad->key,
 			detail::valueText(source, section, bad->key, bad->value),
 			"must be " + bad->rule);
-	try
-	{
-		o.validate();
-	}
-	catch (const std::invalid_argument& e)
-	{
-		throw std::invalid_argument("[" + section + "] " + e.what());
-	}
 	*this = o;
 }
 

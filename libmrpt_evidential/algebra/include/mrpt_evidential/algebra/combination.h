@@ -3,7 +3,7 @@
  * Omega = {F, O}. Header-only, standard library only: never include MRPT. */
 #pragma once
 
-#include <mrpt_evidential/Mass.h>
+#include <mrpt_evidential/algebra/Mass.h>
 
 #include <algorithm>
 #include <stdexcept>
@@ -56,26 +56,38 @@ inline Mass disjunctive(const Mass& a, const Mass& b) noexcept
 	return r;
 }
 
-/** Dempster's rule: the conjunctive rule with the conflict removed by
- * normalization. At total conflict (nothing left to normalize) the sources
- * together prove nothing and the result is the vacuous mass; it never
- * divides by zero. Never throws. */
-inline Mass dempster(const Mass& a, const Mass& b) noexcept
+/** m with its conflict removed by normalization: the other masses divided
+ * by 1 - m(empty). At total conflict (nothing left to normalize) it is the
+ * vacuous mass; it never divides by zero. Never throws. */
+inline Mass normalized(const Mass& m) noexcept
 {
-	const Mass c = conjunctive(a, b);
-	const double k = c.free + c.occupied + c.unknown;
+	const double k = m.free + m.occupied + m.unknown;
 	if (k <= kTotalConflictTolerance) return Mass::vacuous();
-	return {0.0, c.free / k, c.occupied / k, c.unknown / k};
+	return {0.0, m.free / k, m.occupied / k, m.unknown / k};
 }
 
-/** Yager's rule: the conjunctive rule with the conflict moved to Omega
- * (conflict read as ignorance). Never throws. */
+/** m with its conflict moved to Omega (conflict read as ignorance). Never
+ * throws. */
+inline Mass conflictToUnknown(Mass m) noexcept
+{
+	m.unknown += m.conflict;
+	m.conflict = 0.0;
+	return m;
+}
+
+/** Dempster's rule: the conjunctive rule with the conflict removed by
+ * normalization. At total conflict the sources together prove nothing and
+ * the result is the vacuous mass. Never throws. */
+inline Mass dempster(const Mass& a, const Mass& b) noexcept
+{
+	return normalized(conjunctive(a, b));
+}
+
+/** Yager's rule: the conjunctive rule with the conflict moved to Omega.
+ * Never throws. */
 inline Mass yager(const Mass& a, const Mass& b) noexcept
 {
-	Mass c = conjunctive(a, b);
-	c.unknown += c.conflict;
-	c.conflict = 0.0;
-	return c;
+	return conflictToUnknown(conjunctive(a, b));
 }
 
 /** Dubois and Prade's rule: each product of masses of disjoint sets goes to
@@ -193,6 +205,32 @@ inline Mass combine(FusionRule rule, const Mass& a, const Mass& b) noexcept
 		case FusionRule::Conjunctive: break;
 	}
 	return conjunctive(a, b);
+}
+
+/** What becomes of the conflict a fusion creates (the fusion rule decides
+ * how much there is; this decides whether the result keeps it). */
+enum class ConflictHandling
+{
+	/** The result keeps it: conflict marks change (something moved), and
+	 * decay fades it like any other evidence. */
+	Keep,
+	/** It becomes ignorance (conflictToUnknown()). */
+	ToUnknown,
+	/** It is removed and the rest renormalized (normalized()), as Dempster's
+	 * rule does. */
+	Normalize
+};
+
+/** A fused mass after the conflict handling. Never throws. */
+inline Mass handleConflict(const Mass& m, ConflictHandling handling) noexcept
+{
+	switch (handling)
+	{
+		case ConflictHandling::ToUnknown: return conflictToUnknown(m);
+		case ConflictHandling::Normalize: return normalized(m);
+		case ConflictHandling::Keep: break;
+	}
+	return m;
 }
 
 /** A singleton hypothesis of Omega = {F, O}. */

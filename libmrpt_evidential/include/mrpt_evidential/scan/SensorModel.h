@@ -3,9 +3,11 @@
  * only; the MRPT-facing polar grid is in CPolarSourceGrid.h). */
 #pragma once
 
-#include <mrpt_evidential/Mass.h>
+#include <mrpt_evidential/TInvalidOption.h>
+#include <mrpt_evidential/algebra/Mass.h>
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace mrpt_evidential
@@ -47,8 +49,10 @@ struct SensorModelParams
 	double imprecision = 0.0;
 	ImprecisionProfile profile = ImprecisionProfile::Box;
 
-	/** \throws std::invalid_argument naming the first parameter out of range
-	 * (muF or muO outside [0, 1], imprecision negative or not finite). */
+	/** The first parameter out of range (muF or muO outside [0, 1],
+	 * imprecision negative or not finite), if any. */
+	std::optional<TInvalidOption> firstInvalid() const;
+	/** \throws std::invalid_argument describing firstInvalid(). */
 	void validate() const;
 };
 

@@ -2,8 +2,8 @@
  * The bilinear transform of a polar SourceGrid onto the cells of a grid. */
 #pragma once
 
-#include <mrpt_evidential/CPolarSourceGrid.h>
-#include <mrpt_evidential/EvidentialGridStorage.h>
+#include <mrpt_evidential/scan/CPolarSourceGrid.h>
+#include <mrpt_evidential/grid/EvidentialGridStorage.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,89 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
+ * Where the cells of a grid lie. Standard library only. */
+#pragma once
+
+#include <mrpt_evidential/TInvalidOption.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <optional>
+
+namespace mrpt_evidential
+{
+/** Where the cells of a grid lie. Cell (cx, cy) covers
+ * [xMin + cx res, xMin + (cx + 1) res) x [yMin + cy res, yMin + (cy + 1) res). */
+struct GridGeometry
+{
+	double xMin = 0.0, yMin = 0.0, resolution = 0.1;
+	int sizeX = 0, sizeY = 0;
+
+	/** Limits of every grid: bounds within kMaxCoordinate metres of the
+	 * origin, cells of kMinResolution to kMaxResolution metres. Beyond them
+	 * cell centres lose their precision, and squared distances overflow. */
+	static constexpr double kMaxCoordinate = 1e9;
+	static constexpr double kMinResolution = 1e-6, kMaxResolution = 1e6;
+	/** True when the bounds and resolution are within the limits (NaN is
+	 * not). */
+	static bool withinLimits(
+		double xMin, double xMax, double yMin, double yMax, double resolution)
+	{
+		const auto near = [](double v) {
+			return v >= -kMaxCoordinate && v <= kMaxCoordinate;
+		};
+		return resolution >= kMinResolution && resolution <= kMaxResolution &&
+			near(xMin) && near(xMax) && near(yMin) && near(yMax);
+	}
+
+	/** The first invalid value of a grid over [xMin, xMax] x [yMin, yMax]
+	 * with cells of `resolution` metres within a budget of `maxCells` cells,
+	 * named by its .ini key (min_x, max_x, min_y, max_y, resolution,
+	 * maxCells): the resolution or a bound beyond the limits (NaN
+	 * included), min >= max, no budget, or more cells than the budget. */
+	static std::optional<TInvalidOption> firstInvalid(
+		double xMin, double xMax, double yMin, double yMax, double resolution,
+		std::size_t maxCells);
+
+	/** Number of cells needed to cover `length` metres, at least 1 (a
+	 * length within a billionth of a cell above a whole number of cells
+	 * needs that number). */
+	static double cellsToCover(double length, double resolution)
+	{
+		return std::max(1.0, std::ceil(length / resolution - 1e-9));
+	}
+
+	double xMax() const { return xMin + sizeX * resolution; }
+	double yMax() const { return yMin + sizeY * resolution; }
+	std::size_t cellCount() const
+	{
+		return static_cast<std::size_t>(sizeX) * static_cast<std::size_t>(sizeY);
+	}
+	/** Column of x; may be outside [0, sizeX) (far away or NaN: an int's
+	 * smallest or largest value). */
+	int cellX(double x) const { return floorToInt((x - xMin) / resolution); }
+	int cellY(double y) const { return floorToInt((y - yMin) / resolution); }
+	/** floor(v), saturated to an int: a plain cast of a larger value is
+	 * undefined behaviour. NaN gives the smallest int. */
+	static int floorToInt(double v)
+	{
+		constexpr double lo = std::numeric_limits<int>::min();
+		constexpr double hi = std::numeric_limits<int>::max();
+		const double f = std::floor(v);
+		if (f >= hi) return std::numeric_limits<int>::max();
+		return f >= lo ? static_cast<int>(f) : std::numeric_limits<int>::min();
+	}
+	double cellCenterX(int cx) const { return xMin + (cx + 0.5) * resolution; }
+	double cellCenterY(int cy) const { return yMin + (cy + 0.5) * resolution; }
+	bool inside(int cx, int cy) const
+	{
+		return cx >= 0 && cy >= 0 && cx < sizeX && cy < sizeY;
+	}
+	std::size_t index(int cx, int cy) const
+	{
+		return static_cast<std::size_t>(cy) * static_cast<std::size_t>(sizeX) +
+			static_cast<std::size_t>(cx);
+	}
+};
+
+}  // namespace mrpt_evidential

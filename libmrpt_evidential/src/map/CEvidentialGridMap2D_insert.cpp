@@ -1,0 +1,99 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
+ * CEvidentialGridMap2D: inserting scans (polar SourceGrid, bilinear transform
+ * to the cells, decay, fusion). */
+
+#include <mrpt/core/Clock.h>
+#include <mrpt/math/CMatrixFixed.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose3D.h>
+#include <mrpt_evidential/CEvidentialGridMap2D.h>
+#include "insert/PolarToCartesian.h"
+#include "map/MapWorkspace.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+using namespace mrpt_evidential;
+
+bool CEvidentialGridMap2D::internal_insertObservation(
+	const mrpt::obs::CObservation& obs,
+	const std::optional<const mrpt::poses::CPose3D>& robotPose)
+{
+	// Other observation types are not for this map: not an error.
+	const auto* scan = dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs);
+	if (!scan) return false;
+	return insertScan(*scan, robotPose ? *robotPose : mrpt::poses::CPose3D());
+}
+
+bool CEvidentialGridMap2D::insertScan(
+	const mrpt::obs::CObservation2DRangeScan& scan,
+	const mrpt::poses::CPose3D& robotPose)
+{
+	// The map's own rules; the polar grid checks the rest when it builds.
+	if (const auto bad = insertionOptions.firstInvalidOfTheMap())
+		throw std::invalid_argument(bad->describe());
+	const mrpt::poses::CPose3D sensorPose3D = robotPose + scan.sensorPose;
+	for (const double v : {sensorPose3D.x(), sensorPose3D.y(), sensorPose3D.z(),
+						   sensorPose3D.yaw(), sensorPose3D.pitch(), sensorPose3D.roll()})
+		if (!std::isfinite(v))
+			throw std::invalid_argument(
+				"CEvidentialGridMap2D: the scan's pose is not finite: " +
+				sensorPose3D.asString());
+	const auto sensor =
+		planarSensorPose(sensorPose3D, insertionOptions.horizontalTolerance);
+	if (!sensor)
+	{
+		if (!m_tiltNoticeShown)
+			std::cerr << "[CEvidentialGridMap2D] note: scans whose sensor tilts "
+						 "beyond horizontalTolerance are ignored (shown once)\n";
+		m_tiltNoticeShown = true;
+		return false;
+	}
+
+	CPolarSourceGrid& polar = m_workspace->sourceGrid;
+	CPolarToCartesian& transform = m_workspace->transform;
+	polar.build(scan, insertionOptions.sourceGridOptions(getResolution()));
+	m_grid.setDecayRate(insertionOptions.decayRate);
+	m_grid.beginInsertion(mrpt::Clock::toDouble(scan.timestamp));
+	invalidateLikelihoodCache();
+
+	transform.setup(polar, *sensor);
+	const Box& box = transform.box();
+	if (box.empty()) return true;
+	if (!m_grid.growToInclude(
+			box.xMin, box.xMax, box.yMin, box.yMax, insertionOptions.growthMargin,
+			m_maxCells) &&
+		!m_budgetWarningShown)
+	{
+		m_budgetWarningShown = true;
+		std::cerr << "[CEvidentialGridMap2D] warning: the grid cannot grow to "
+					 "hold a scan at ("
+				  << sensor->x << ", " << sensor->y << ") within its budget of "
+				  << m_maxCells
+				  << " cells (creationOpts maxCells) and 1e9 m of the origin; "
+					 "such scans are inserted only where they overlap the grid. "
+					 "Shown once.\n";
+	}
+
+	const FusionRule rule = insertionOptions.fusionRule;
+	const ConflictHandling handling = insertionOptions.conflictHandling;
+	const Mass& uniform = transform.uniformMass();
+	if (rule == FusionRule::Conjunctive && handling == ConflictHandling::Keep)
+		transform.forEachInformedCell(
+			geometry(),
+			[&](std::size_t idx, const Mass& observed) {
+				m_grid.fuseConjunctive(idx, observed);
+			},
+			[&, w = static_cast<float>(uniform.free)](std::size_t idx) {
+				m_grid.fuseSimpleFree(idx, w);
+			});
+	else
+		transform.forEachInformedCell(
+			geometry(),
+			[&](std::size_t idx, const Mass& observed) {
+				m_grid.fuse(idx, observed, rule, handling);
+			},
+			[&](std::size_t idx) { m_grid.fuse(idx, uniform, rule, handling); });
+	return true;
+}

@@ -1,0 +1,25 @@
+/* mrpt-evidential: internal: what CEvidentialGridMap2D keeps beside its
+ * cells (see CEvidentialGridMap2D::TWorkspace). */
+#pragma once
+
+#include <mrpt_evidential/CEvidentialGridMap2D.h>
+#include <mrpt_evidential/scan/CPolarSourceGrid.h>
+
+#include <memory>
+#include <mutex>
+
+#include "insert/PolarToCartesian.h"
+
+namespace mrpt_evidential
+{
+struct CEvidentialGridMap2D::TWorkspace
+{
+	/** Insertion's scratch space, kept to avoid allocations. */
+	CPolarSourceGrid sourceGrid;
+	CPolarToCartesian transform;
+	/** The likelihood field, or null until a likelihood needs it. The mutex
+	 * guards the pointer: readers of the map may race to build it. */
+	std::mutex likelihoodMutex;
+	std::shared_ptr<const LikelihoodField> likelihood;
+};
+}  // namespace mrpt_evidential
