@@ -9,6 +9,7 @@
 #include <mrpt_evidential/grid/EvidentialGridStorage.h>
 #include <mrpt_evidential/scan/CPolarSourceGrid.h>
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -161,6 +162,17 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	 * (occupancy = BetP; unknown cells as 205). Written atomically.
 	 * \throws std::runtime_error if a file cannot be written. */
 	void saveAsROSMap(const std::string& prefix) const;
+	/** Writes the three pictures above as `<prefix>evidential.png`,
+	 * `<prefix>betp.png` and `<prefix>conflict.png` (pictureNames()), each
+	 * atomically; the prefix is a folder ending in '/' or a file name's stem.
+	 * \throws std::runtime_error if a file cannot be written. */
+	void savePictures(const std::string& prefix) const;
+	/** The names savePictures() appends to its prefix. */
+	static const std::array<const char*, 3>& pictureNames();
+	/** The geometry in four lines, each after `indent`: "x: [xmin, xmax]
+	 * m", "y: [ymin, ymax] m", "resolution: r m", "cells: NX x NY (budget
+	 * B)", numbers in their shortest exact text. */
+	std::string geometryText(const std::string& indent = "") const;
 	/** Centres of the cells whose decision is Occupied. */
 	std::vector<std::pair<double, double>> getOccupiedCellCenters() const;
 	/** @} */
@@ -169,8 +181,7 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	 * @{ */
 	/** True until an observation has been inserted. */
 	bool isEmpty() const override;
-	/** Writes `<prefix>_evidential.png`, `<prefix>_betp.png`,
-	 * `<prefix>_conflict.png`, `<prefix>_info.txt` (geometry, options and
+	/** Writes savePictures(`<prefix>_`), `<prefix>_info.txt` (geometry, options and
 	 * counts per decision) and `<prefix>.evgrid` (the serialized map), each
 	 * atomically. \throws std::runtime_error if a file cannot be written. */
 	void saveMetricMapRepresentationToFile(

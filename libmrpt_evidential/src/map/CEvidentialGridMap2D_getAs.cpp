@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <ostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -192,27 +193,48 @@ void CEvidentialGridMap2D::getVisualizationInto(
 	o.insert(plane);
 }
 
-void CEvidentialGridMap2D::saveMetricMapRepresentationToFile(
-	const std::string& filNamePrefix) const
+const std::array<const char*, 3>& CEvidentialGridMap2D::pictureNames()
+{
+	static const std::array<const char*, 3> names{
+		"evidential.png", "betp.png", "conflict.png"};
+	return names;
+}
+
+void CEvidentialGridMap2D::savePictures(const std::string& prefix) const
 {
 	mrpt::img::CImage img;
 	getAsEvidentialImage(img);
-	savePicture(filNamePrefix + "_evidential.png", img);
+	savePicture(prefix + pictureNames()[0], img);
 	getAsBetPImage(img);
-	savePicture(filNamePrefix + "_betp.png", img);
+	savePicture(prefix + pictureNames()[1], img);
 	getAsConflictImage(img);
-	savePicture(filNamePrefix + "_conflict.png", img);
+	savePicture(prefix + pictureNames()[2], img);
+}
+
+std::string CEvidentialGridMap2D::geometryText(const std::string& indent) const
+{
+	const GridGeometry& g = geometry();
+	using detail::shortestText;
+	std::ostringstream s;
+	s << indent << "x: [" << shortestText(g.xMin) << ", " << shortestText(g.xMax())
+	  << "] m\n"
+	  << indent << "y: [" << shortestText(g.yMin) << ", " << shortestText(g.yMax())
+	  << "] m\n"
+	  << indent << "resolution: " << shortestText(g.resolution) << " m\n"
+	  << indent << "cells: " << g.sizeX << " x " << g.sizeY << " (budget "
+	  << m_maxCells << ")\n";
+	return s.str();
+}
+
+void CEvidentialGridMap2D::saveMetricMapRepresentationToFile(
+	const std::string& filNamePrefix) const
+{
+	savePictures(filNamePrefix + "_");
 
 	writeFileAtomically(filNamePrefix + "_info.txt", [this](std::ostream& os) {
-		const GridGeometry& g = geometry();
 		const TDecisionCounts c = countDecisions();
 		os << "mrpt_evidential::CEvidentialGridMap2D\n"
-		   << "x: [" << detail::shortestText(g.xMin) << ", " << detail::shortestText(g.xMax()) << "] m\n"
-		   << "y: [" << detail::shortestText(g.yMin) << ", " << detail::shortestText(g.yMax()) << "] m\n"
-		   << "resolution: " << detail::shortestText(g.resolution) << " m\n"
-		   << "cells: " << g.sizeX << " x " << g.sizeY << " (budget "
-		   << m_maxCells << ")\n"
-		   << "insertions: " << insertionCount() << "\n"
+		   << geometryText() << "insertions: " << insertionCount() << "\n"
 		   << "latest time: " << detail::shortestText(latestTime()) << " s\n"
 		   << "cells by decision: free " << c.free << ", occupied "
 		   << c.occupied << ", unknown " << c.unknown << ", conflict "
