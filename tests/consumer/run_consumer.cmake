@@ -1,5 +1,6 @@
 # Installs the build tree into a scratch prefix, then configures, builds and
-# runs the consumer project against it. Fails on the first step that fails.
+# runs the consumer project against it: its own program, the README's example
+# and a program of the algebra alone. Fails on the first step that fails.
 file(REMOVE_RECURSE ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
 function(step)
@@ -9,7 +10,19 @@ function(step)
   endif()
 endfunction()
 step(${CMAKE_COMMAND} --install ${PROJECT_BINARY_DIR} --prefix ${prefix})
+
+# The README's C++ example, exactly as written there.
+file(READ ${README} readme)
+string(REGEX MATCH "```cpp\n([^`]*)```" block "${readme}")
+if(NOT block)
+  message(FATAL_ERROR "no C++ example found in ${README}")
+endif()
+file(WRITE ${WORK_DIR}/readme_example.cpp "${CMAKE_MATCH_1}")
+
 step(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR} -B ${WORK_DIR}/build
-  -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
+  -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release
+  -DREADME_EXAMPLE=${WORK_DIR}/readme_example.cpp)
 step(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
 step(${WORK_DIR}/build/consumer)
+step(${WORK_DIR}/build/readme_example)
+step(${WORK_DIR}/build/algebra_only)
