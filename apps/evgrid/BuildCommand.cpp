@@ -1,41 +1,30 @@
-/* evgrid build: an evidential grid from a rawlog or a simplemap. */
+/* evgrid build: an evidential grid from a rawlog or a simplemap. This file
+ * reads the command line and runs the parts in order: input, poses,
+ * insertion, outputs, report. */
 
-#include <mrpt/core/Clock.h>
-#include <mrpt/img/CImage.h>
-#include <mrpt/maps/CSimpleMap.h>
-#include <mrpt/obs/CActionCollection.h>
-#include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
-#include <mrpt/obs/CObservationOdometry.h>
-#include <mrpt/obs/CSensoryFrame.h>
-#include <mrpt/poses/CPose2D.h>
-#include <mrpt/poses/CPose3D.h>
-#include <mrpt/poses/CPose3DPDF.h>
-#include <mrpt/serialization/CArchive.h>
-#include <mrpt/serialization/archiveFrom_std_streams.h>
 
-#include <chrono>
-#include <cmath>
 #include <csignal>
-#include <cstdio>
-#include <filesystem>
 #include <fstream>
-#include <iomanip>
 #include <iostream>
-#include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
+#include <vector>
 
-#include "CGrowthAnimation.h"
-#include "CObjectFileReader.h"
+#include "BuildOptions.h"
+#include "BuildReport.h"
+#include "CGrowthRecorder.h"
+#include "CInputWalker.h"
 #include "COutputFolder.h"
-#include "CPoseFile.h"
+#include "CPoseSource.h"
 #include "CProgress.h"
+#include "CScopedTimer.h"
 #include "CommandLine.h"
 #include "Commands.h"
 #include "MapFiles.h"
+#include "MapOutputs.h"
 
-using mrpt::poses::CPose2D;
 using mrpt::poses::CPose3D;
 using mrpt_evidential::CEvidentialGridMap2D;
 
@@ -43,442 +32,22 @@ namespace evgrid
 {
 namespace
 {
-const std::string kName = "evgrid build";
-
 /** Set by SIGINT / SIGTERM: the run stops at the next entry and cleans up
  * its temporary files instead of dying with them in place. */
 volatile std::sig_atomic_t g_stopSignal = 0;
 void onStopSignal(int signal) { g_stopSignal = signal; }
 
-using SteadyClock = std::chrono::steady_clock;
-
-double secondsSince(SteadyClock::time_point start)
+void throwIfStopRequested()
 {
-	return std::chrono::duration<double>(SteadyClock::now() - start).count();
-}
-
-/** Adds the duration of its scope to a counter. */
-class CScopedTimer
-{
-   public:
-	explicit CScopedTimer(double& total) : m_total(total) {}
-	~CScopedTimer() { m_total += secondsSince(m_start); }
-	CScopedTimer(const CScopedTimer&) = delete;
-	CScopedTimer& operator=(const CScopedTimer&) = delete;
-
-   private:
-	double& m_total;
-	SteadyClock::time_point m_start = SteadyClock::now();
-};
-
-struct TBuildOptions
-{
-	std::string input, outputDir, config, section, poses;
-	CPoseFile::Kind posesKind = CPoseFile::Kind::Auto;
-	double poseTolerance = 0.1;
-	int every = 0;
-	bool animation = false;
-	int animationEvery = 1, animationWidth = 720, animationHeight = 720;
-	double animationFps = 25.0;
-	bool quiet = false;
-	std::string commandLine;
-};
-
-/** What a run did, for the summary. */
-struct TBuildStats
-{
-	std::size_t entries = 0, actions = 0, sensoryFrames = 0, observations = 0;
-	std::size_t scans = 0, inserted = 0, withoutPose = 0, rejected = 0;
-	std::size_t frames = 0, animationFrames = 0;
-	std::map<std::string, std::size_t> otherObservations;
-	bool simplemap = false;
-	/** The rawlog ends with an action that has no sensory frame after it. */
-	bool trailingAction = false;
-	// Seconds of wall time.
-	double reading = 0, insertion = 0, writing = 0, total = 0;
-};
-
-/** "1.2 s (34%)" */
-std::string share(double part, double total)
-{
-	std::ostringstream s;
-	s << std::fixed << std::setprecision(3) << part << " s ("
-	  << std::setprecision(0) << (total > 0 ? 100.0 * part / total : 0.0)
-	  << "%)";
-	return s.str();
-}
-
-double perSecond(std::size_t count, double seconds)
-{
-	return seconds > 0 ? static_cast<double>(count) / seconds : 0.0;
-}
-
-/** Reads the input, places each scan and inserts it; writes the frames and
- * the animation into the staging folder as it goes. */
-class CMapBuilder
-{
-   public:
-	CMapBuilder(
-		const TBuildOptions& options, COutputFolder& out,
-		CEvidentialGridMap2D& map, const std::optional<CPoseFile>& poseFile)
-		: m_options(options),
-		  m_out(out),
-		  m_map(map),
-		  m_poseFile(poseFile),
-		  m_progress(CProgress::modeFor(options.quiet), kName)
-	{
-	}
-
-	void run()
-	{
-		CObjectFileReader reader(m_options.input);
-		mrpt::serialization::CSerializable::Ptr object;
-		{
-			CScopedTimer t(m_stats.reading);
-			object = reader.next();
-		}
-		if (!object)
-			throw std::runtime_error(m_options.input + ": the file is empty");
-		m_compressed = reader.isCompressed();
-		if (m_options.animation) openAnimation();
-
-		if (auto simplemap =
-				std::dynamic_pointer_cast<mrpt::maps::CSimpleMap>(object))
-			insertSimplemap(*simplemap);
-		else
-			insertRawlog(reader, object);
-		m_progress.finish();
-
-		if (m_stats.inserted == 0)
-			throw std::runtime_error(
-				m_options.input + ": no scan was inserted (" +
-				scanAccount() + ")");
-		if (m_animation)
-		{
-			CScopedTimer t(m_stats.writing);
-			m_animation->close();
-		}
-	}
-
-	TBuildStats& stats() { return m_stats; }
-	bool compressed() const { return m_compressed; }
-
-	/** "224 2-D scans: 224 inserted, 0 without a pose, 0 refused" */
-	std::string scanAccount() const
-	{
-		return std::to_string(m_stats.scans) + " 2-D scans: " +
-			std::to_string(m_stats.inserted) + " inserted, " +
-			std::to_string(m_stats.withoutPose) + " without a pose, " +
-			std::to_string(m_stats.rejected) + " refused by the map";
-	}
-
-	std::string inputKind() const
-	{
-		if (m_stats.simplemap) return "simplemap";
-		const bool pairs = m_stats.actions + m_stats.sensoryFrames > 0;
-		const bool single = m_stats.observations > 0;
-		if (pairs && single)
-			return "rawlog (actions/sensory frames and observations)";
-		return single ? "rawlog (observations)"
-					  : "rawlog (actions/sensory frames)";
-	}
-
-	std::string posesDescription() const
-	{
-		if (m_poseFile)
-		{
-			std::ostringstream s;
-			s << m_poseFile->path() << ", " << m_poseFile->size() << " poses, ";
-			if (m_poseFile->kind() == CPoseFile::Kind::Step)
-				s << "by step number (icp-slam path)";
-			else
-				s << "by time stamp (interpolated, tolerance "
-				  << m_options.poseTolerance << " s)";
-			return s.str();
-		}
-		if (m_stats.simplemap) return "the simplemap's (mean of each keyframe)";
-		if (m_stats.actions > 0)
-			return "odometry (sum of the actions' movement increments)";
-		return "odometry (latest CObservationOdometry reading)";
-	}
-
-   private:
-	void openAnimation()
-	{
-		m_animation.emplace(
-			m_out.staged("growth.avi"), m_options.animationWidth,
-			m_options.animationHeight, m_options.animationFps);
-	}
-
-	void insertSimplemap(const mrpt::maps::CSimpleMap& simplemap)
-	{
-		m_stats.simplemap = true;
-		m_stats.entries = simplemap.size();
-		if (m_poseFile && m_poseFile->kind() == CPoseFile::Kind::Step)
-			throw std::runtime_error(
-				m_poseFile->path() +
-				": holds poses by step number (as icp-slam writes them), "
-				"which count rawlog entries; a simplemap needs time stamps");
-		std::size_t done = 0;
-		for (const auto& keyframe : simplemap)
-		{
-			checkStopSignal();
-			m_where = "keyframe " + std::to_string(done);
-			++done;
-			if (!keyframe.sf) continue;
-			std::optional<CPose3D> pose;
-			if (keyframe.pose) pose = keyframe.pose->getMeanVal();
-			for (const auto& obs : *keyframe.sf)
-				insertObservation(obs, std::nullopt, pose);
-			m_progress.update(
-				static_cast<double>(done) / static_cast<double>(simplemap.size()),
-				m_stats.inserted);
-		}
-	}
-
-	void insertRawlog(
-		CObjectFileReader& reader, mrpt::serialization::CSerializable::Ptr object)
-	{
-		using namespace mrpt::obs;
-		// icp-slam numbers the (action, sensory frame) pairs and the single
-		// observations it reads; a sensory frame not preceded by an action
-		// is skipped by MRPT's reader and gets no step number.
-		std::size_t nextStep = 0;
-		bool actionPending = false;
-		CPose2D odometry;  // sum of the actions' increments
-		std::optional<CPose2D> odometryReading;  // observation-only rawlogs
-
-		while (object)
-		{
-			checkStopSignal();
-			m_where = "entry " + std::to_string(reader.entryIndex());
-			++m_stats.entries;
-			if (const auto actions =
-					std::dynamic_pointer_cast<CActionCollection>(object))
-			{
-				++m_stats.actions;
-				if (const auto move = actions->getBestMovementEstimation();
-					move && move->poseChange)
-					odometry = odometry + move->poseChange->getMeanVal();
-				actionPending = true;
-			}
-			else if (const auto frame =
-						 std::dynamic_pointer_cast<CSensoryFrame>(object))
-			{
-				++m_stats.sensoryFrames;
-				std::optional<std::size_t> step;
-				if (actionPending) step = nextStep++;
-				actionPending = false;
-				for (const auto& obs : *frame)
-					insertObservation(obs, step, CPose3D(odometry));
-			}
-			else if (const auto obs =
-						 std::dynamic_pointer_cast<CObservation>(object))
-			{
-				++m_stats.observations;
-				if (const auto reading =
-						std::dynamic_pointer_cast<CObservationOdometry>(obs))
-					odometryReading = reading->odometry;
-				std::optional<CPose3D> pose;
-				if (odometryReading) pose = CPose3D(*odometryReading);
-				insertObservation(obs, nextStep++, pose);
-			}
-			else
-				throw std::runtime_error(
-					m_options.input + ": " + m_where + " is a " +
-					object->GetRuntimeClass()->className +
-					", which has no place in a rawlog");
-
-			m_progress.update(reader.fractionRead(), m_stats.inserted);
-			CScopedTimer t(m_stats.reading);
-			object = reader.next();
-		}
-		// Some of MRPT's own datasets end so (simul.rawlog): not an error.
-		m_stats.trailingAction = actionPending;
-	}
-
-	void insertObservation(
-		const mrpt::obs::CObservation::Ptr& obs,
-		std::optional<std::size_t> step,
-		const std::optional<CPose3D>& framePose)
-	{
-		if (!obs) return;
-		const auto* scan =
-			dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(obs.get());
-		if (!scan)
-		{
-			++m_stats.otherObservations[obs->GetRuntimeClass()->className];
-			return;
-		}
-		++m_stats.scans;
-		const auto pose = poseFor(*scan, step, framePose);
-		if (!pose)
-		{
-			++m_stats.withoutPose;
-			return;
-		}
-		bool inserted = false;
-		try
-		{
-			CScopedTimer t(m_stats.insertion);
-			inserted = m_map.insertObservation(*scan, *pose);
-		}
-		catch (const std::exception& e)
-		{
-			// Damaged data can parse into a scan the map refuses (a sensor
-			// pose that is not a number): say which one.
-			throw std::runtime_error(
-				m_options.input + ": " + m_where +
-				": cannot insert the scan: " + describe(e));
-		}
-		if (!inserted)
-		{
-			++m_stats.rejected;
-			return;
-		}
-		++m_stats.inserted;
-		writeGrowth();
-	}
-
-	std::optional<CPose3D> poseFor(
-		const mrpt::obs::CObservation& scan, std::optional<std::size_t> step,
-		const std::optional<CPose3D>& framePose) const
-	{
-		if (!m_poseFile) return framePose;
-		std::optional<mrpt::math::TPose2D> pose;
-		if (m_poseFile->kind() == CPoseFile::Kind::Step)
-		{
-			if (step) pose = m_poseFile->atStep(*step);
-		}
-		else if (scan.timestamp != INVALID_TIMESTAMP)
-			pose = m_poseFile->atTime(
-				mrpt::Clock::toDouble(scan.timestamp), m_options.poseTolerance);
-		if (!pose) return std::nullopt;
-		return CPose3D(CPose2D(*pose));
-	}
-
-	/** The frame pictures and the animation, after an insertion. */
-	void writeGrowth()
-	{
-		const std::size_t n = m_stats.inserted;
-		const bool frame = m_options.every > 0 &&
-			n % static_cast<std::size_t>(m_options.every) == 0;
-		const bool video = m_animation &&
-			n % static_cast<std::size_t>(m_options.animationEvery) == 0;
-		if (!frame && !video) return;
-
-		CScopedTimer t(m_stats.writing);
-		mrpt::img::CImage picture;
-		m_map.getAsEvidentialImage(picture);
-		if (frame)
-		{
-			char name[64];
-			std::snprintf(name, sizeof(name), "frame_%06zu_evidential.png", n);
-			const std::string folder = m_out.staged("frames");
-			std::filesystem::create_directories(folder);
-			const std::string path = folder + "/" + name;
-			if (!picture.saveToFile(path))
-				throw std::runtime_error(path + ": cannot write the picture");
-			++m_stats.frames;
-		}
-		if (video)
-		{
-			m_animation->add(picture);
-			++m_stats.animationFrames;
-		}
-	}
-
-	void checkStopSignal() const
-	{
-		if (g_stopSignal != 0)
-			throw std::runtime_error(
-				"interrupted by signal " + std::to_string(g_stopSignal) +
-				"; the output folder is unchanged");
-	}
-
-	const TBuildOptions& m_options;
-	COutputFolder& m_out;
-	CEvidentialGridMap2D& m_map;
-	const std::optional<CPoseFile>& m_poseFile;
-	CProgress m_progress;
-	std::optional<CGrowthAnimation> m_animation;
-	TBuildStats m_stats;
-	bool m_compressed = false;
-	/** The entry or keyframe being inserted, for error messages. */
-	std::string m_where;
-};
-
-void writeSummary(
-	std::ostream& os, const TBuildOptions& options, const CMapBuilder& builder,
-	const TBuildStats& stats, const CEvidentialGridMap2D& map,
-	const CEvidentialGridMap2D::TDecisionCounts& counts)
-{
-	const auto& g = map.geometry();
-	os << "evgrid build summary\n\n"
-	   << "command: " << options.commandLine << "\n"
-	   << "input: " << options.input << "\n"
-	   << "  " << builder.inputKind()
-	   << (builder.compressed() ? ", gzip-compressed" : "") << ", "
-	   << stats.entries << (stats.simplemap ? " keyframes" : " entries")
-	   << (stats.trailingAction
-			   ? " (the last, an action, has no sensory frame after it)"
-			   : "")
-	   << "\n"
-	   << "poses: " << builder.posesDescription() << "\n"
-	   << "config: "
-	   << (options.config.empty() ? "none (the map's defaults)"
-								  : options.config + ", section [" +
-				   options.section + "]")
-	   << "\n\n";
-
-	os << "scans: " << builder.scanAccount() << "\n";
-	if (stats.otherObservations.empty())
-		os << "other observations: none\n";
-	for (const auto& [cls, n] : stats.otherObservations)
-		os << "other observations: " << n << " " << cls << " (not inserted)\n";
-	if (stats.frames > 0)
-		os << "frames: " << stats.frames << " pictures in frames/, one every "
-		   << options.every << " scans\n";
-	if (stats.animationFrames > 0)
-		os << "animation: growth.avi, " << stats.animationFrames
-		   << " frames of " << options.animationWidth << " x "
-		   << options.animationHeight << " at " << options.animationFps
-		   << " frames/s\n";
-
-	os << std::defaultfloat << std::setprecision(10) << "\nmap:\n"
-	   << "  x: [" << g.xMin << ", " << g.xMax() << "] m\n"
-	   << "  y: [" << g.yMin << ", " << g.yMax() << "] m\n"
-	   << "  resolution: " << g.resolution << " m\n"
-	   << "  cells: " << g.sizeX << " x " << g.sizeY << "\n"
-	   << "  insertions: " << map.insertionCount() << "\n"
-	   << "  latest time: " << std::fixed << std::setprecision(6)
-	   << map.latestTime() << " s\n"
-	   << "cells by decision:\n";
-	printDecisionCounts(os, counts, g.cellCount());
-
-	os << std::fixed << std::setprecision(1) << "\ntiming:\n"
-	   << "  total: " << std::setprecision(3) << stats.total << " s, "
-	   << std::setprecision(1) << perSecond(stats.inserted, stats.total)
-	   << " scans/s (insertion alone: "
-	   << perSecond(stats.inserted, stats.insertion) << " scans/s)\n"
-	   << "  reading: " << share(stats.reading, stats.total) << "\n"
-	   << "  insertion: " << share(stats.insertion, stats.total) << "\n"
-	   << "  writing: " << share(stats.writing, stats.total) << "\n"
-	   << "  other: "
-	   << share(
-			  std::max(
-				  0.0, stats.total - stats.reading - stats.insertion -
-					  stats.writing),
-			  stats.total)
-	   << "\n\noptions:\n";
-	os << std::defaultfloat;
-	map.insertionOptions.dumpToTextStream(os);
-	map.likelihoodOptions.dumpToTextStream(os);
+	if (g_stopSignal != 0)
+		throw std::runtime_error(
+			"interrupted by signal " + std::to_string(g_stopSignal) +
+			"; the output folder is unchanged");
 }
 
 std::string joinCommandLine(int argc, char** argv, int first)
 {
-	std::string s = kName;
+	std::string s = kBuildName;
 	for (int i = first; i < argc; ++i)
 	{
 		const std::string arg = argv[i];
@@ -498,11 +67,13 @@ bool parseSize(const std::string& text, int& width, int& height)
 	return (in >> width >> x >> height) && (x == 'x' || x == 'X') &&
 		!(in >> rest);
 }
-}  // namespace
 
-int runBuild(int argc, char** argv, int first)
+/** Fills `options` from the command line.
+ * \return as parse(): nothing when the run should go ahead, else the exit
+ *  code. \throws UsageError for values that make no sense. */
+std::optional<int> parseOptions(
+	int argc, char** argv, int first, TBuildOptions& options)
 {
-	const auto start = SteadyClock::now();
 	TCLAP::CmdLine cmd(
 		"Builds an evidential grid map from a rawlog (action/sensory-frame or "
 		"observation-only format, plain or .gz) or a simplemap, and writes "
@@ -578,27 +149,27 @@ int runBuild(int argc, char** argv, int first)
 		".simplemap.gz); the kind is read from the file's content.",
 		false, "", "FILE", cmd);
 
-	if (const auto exitCode = parse(cmd, kName, argc, argv, first))
-		return *exitCode;
+	if (const auto exitCode = parse(cmd, kBuildName, argc, argv, first))
+		return exitCode;
 
 	if (argInput.getValue().empty())
 		throw UsageError("missing the input: -i FILE (a rawlog or simplemap)");
 	if (argOutput.getValue().empty())
 		throw UsageError("missing the output folder: -o DIR");
 
-	TBuildOptions options;
 	options.input = argInput.getValue();
 	options.outputDir = argOutput.getValue();
 	options.config = argConfig.getValue();
 	options.section = argSection.getValue();
 	options.poses = argPoses.getValue();
 	options.poseTolerance = argTolerance.getValue();
-	options.every = argEvery.getValue();
-	options.animation = argAnimation.getValue();
-	options.animationEvery = argAnimationEvery.getValue();
-	options.animationFps = argFps.getValue();
 	options.quiet = argQuiet.getValue();
 	options.commandLine = joinCommandLine(argc, argv, first);
+	TGrowthOptions& growth = options.growth;
+	growth.frameEvery = argEvery.getValue();
+	growth.animation = argAnimation.getValue();
+	growth.animationEvery = argAnimationEvery.getValue();
+	growth.animationFps = argFps.getValue();
 
 	const std::string& format = argPosesFormat.getValue();
 	if (format == "auto") options.posesKind = CPoseFile::Kind::Auto;
@@ -611,29 +182,114 @@ int runBuild(int argc, char** argv, int first)
 		throw UsageError("--poses-format needs --poses");
 	if (!(options.poseTolerance >= 0.0))
 		throw UsageError("--pose-tolerance must be >= 0 seconds");
-	if (argEvery.isSet()) requireAtLeast("--every", options.every, 1);
-	requireAtLeast("--animation-every", options.animationEvery, 1);
+	if (argEvery.isSet()) requireAtLeast("--every", growth.frameEvery, 1);
+	requireAtLeast("--animation-every", growth.animationEvery, 1);
 	if (!parseSize(
-			argAnimationSize.getValue(), options.animationWidth,
-			options.animationHeight) ||
-		options.animationWidth < 16 || options.animationHeight < 16 ||
-		options.animationWidth > 8192 || options.animationHeight > 8192)
+			argAnimationSize.getValue(), growth.animationWidth,
+			growth.animationHeight) ||
+		growth.animationWidth < 16 || growth.animationHeight < 16 ||
+		growth.animationWidth > 8192 || growth.animationHeight > 8192)
 		throw UsageError(
 			"--animation-size must be WIDTHxHEIGHT, each 16 to 8192 pixels, "
 			"got '" + argAnimationSize.getValue() + "'");
-	if (!(options.animationFps > 0.0 && options.animationFps <= 1000.0))
+	if (!(growth.animationFps > 0.0 && growth.animationFps <= 1000.0))
 		throw UsageError("--animation-fps must be in (0, 1000]");
-	if (!options.animation &&
+	if (!growth.animation &&
 		(argAnimationEvery.isSet() || argAnimationSize.isSet() || argFps.isSet()))
 		throw UsageError(
 			"--animation-every, --animation-size and --animation-fps need "
 			"--animation");
+	return std::nullopt;
+}
 
-	// From here on temporary files exist: a stop request must let the run
-	// remove them.
-	std::signal(SIGINT, onStopSignal);
-	std::signal(SIGTERM, onStopSignal);
+/** Inserts the scans the input walker hands on, counting what becomes of
+ * them, and lets the growth recorder see the map after each insertion. */
+class CScanInserter
+{
+   public:
+	CScanInserter(
+		CEvidentialGridMap2D& map, const CInputWalker& input,
+		CGrowthRecorder& growth)
+		: m_map(map), m_input(input), m_growth(growth)
+	{
+	}
 
+	void insert(
+		const mrpt::obs::CObservation2DRangeScan& scan,
+		const std::optional<CPose3D>& pose)
+	{
+		++m_counts.total;
+		if (!pose)
+		{
+			++m_counts.withoutPose;
+			return;
+		}
+		bool inserted = false;
+		try
+		{
+			CScopedTimer t(m_seconds);
+			inserted = m_map.insertObservation(scan, *pose);
+		}
+		catch (const std::exception& e)
+		{
+			// Damaged data can parse into a scan the map refuses (a sensor
+			// pose that is not a number): say which one.
+			throw std::runtime_error(
+				m_input.place() + ": cannot insert the scan: " + describe(e));
+		}
+		if (!inserted)
+		{
+			++m_counts.rejected;
+			return;
+		}
+		++m_counts.inserted;
+		m_growth.afterInsertion(m_map, m_counts.inserted);
+	}
+
+	const TScanCounts& counts() const { return m_counts; }
+	/** Seconds spent in the map's insertion. */
+	double seconds() const { return m_seconds; }
+
+   private:
+	CEvidentialGridMap2D& m_map;
+	const CInputWalker& m_input;
+	CGrowthRecorder& m_growth;
+	TScanCounts m_counts;
+	double m_seconds = 0;
+};
+
+/** Writes the map, its pictures and summary.txt into the staging folder,
+ * then moves everything the run wrote into place. */
+void writeResults(
+	const TBuildOptions& options, TBuildRecord& run,
+	const CEvidentialGridMap2D& map, COutputFolder& out,
+	SteadyClock::time_point start)
+{
+	{
+		CScopedTimer t(run.times.writing);
+		saveMap(map, out.staged("map.evgrid"));
+		savePicturesIn(map, out.stagingFolder());
+	}
+	run.times.total = secondsSince(start);
+	run.decisions = map.countDecisions();
+	{
+		const std::string path = out.staged("summary.txt");
+		std::ofstream f(path);
+		writeSummary(f, options, run, map);
+		f.close();
+		if (!f) throw std::runtime_error(path + ": cannot write the summary");
+	}
+	// summary.txt last: it marks a complete run.
+	std::vector<std::string> results{"map.evgrid"};
+	for (const char* name : CEvidentialGridMap2D::pictureNames())
+		results.emplace_back(name);
+	results.insert(results.end(), {"frames", "growth.avi", "summary.txt"});
+	out.commit(results);
+}
+
+/** The run itself, `start` being when the program started. */
+void build(const TBuildOptions& options, SteadyClock::time_point start)
+{
 	// Everything that can be checked without reading the input, first: the
 	// output folder, then the small files.
 	COutputFolder out(options.outputDir);
@@ -644,70 +300,54 @@ int runBuild(int argc, char** argv, int first)
 	std::optional<CPoseFile> poseFile;
 	if (!options.poses.empty())
 		poseFile = CPoseFile::load(options.poses, options.posesKind);
+	CPoseSource poses(std::move(poseFile), options.poseTolerance);
 
-	CMapBuilder builder(options, out, *map, poseFile);
-	builder.run();
-	TBuildStats& stats = builder.stats();
+	CProgress progress(CProgress::modeFor(options.quiet), kBuildName);
+	CInputWalker input(options.input, poses);
+	CGrowthRecorder growth(options.growth, out);
+	CScanInserter inserter(*map, input, growth);
+	input.walk(
+		{throwIfStopRequested,
+		 [&inserter](const auto& scan, const auto& pose) {
+			 inserter.insert(scan, pose);
+		 },
+		 [&](double fraction) {
+			 progress.update(fraction, inserter.counts().inserted);
+		 }});
+	progress.finish();
+	if (inserter.counts().inserted == 0)
+		throw std::runtime_error(
+			options.input + ": no scan was inserted (" +
+			scanAccount(inserter.counts()) + ")");
+	growth.finish();
 
-	{
-		CScopedTimer t(stats.writing);
-		{
-			const std::string path = out.staged("map.evgrid");
-			std::ofstream f(path, std::ios::binary);
-			auto archive = mrpt::serialization::archiveFrom<std::ostream>(f);
-			archive << *map;
-			f.close();
-			if (!f) throw std::runtime_error(path + ": cannot write the map");
-		}
-		mrpt::img::CImage picture;
-		const auto save = [&](const std::string& name) {
-			if (!picture.saveToFile(out.staged(name)))
-				throw std::runtime_error(
-					out.final(name) + ": cannot write the picture");
-		};
-		map->getAsEvidentialImage(picture);
-		save("evidential.png");
-		map->getAsBetPImage(picture);
-		save("betp.png");
-		map->getAsConflictImage(picture);
-		save("conflict.png");
-	}
-	stats.total = secondsSince(start);
-	const auto counts = map->countDecisions();
-	{
-		const std::string path = out.staged("summary.txt");
-		std::ofstream f(path);
-		writeSummary(f, options, builder, stats, *map, counts);
-		f.close();
-		if (!f) throw std::runtime_error(path + ": cannot write the summary");
-	}
-	out.commit(
-		{"map.evgrid", "evidential.png", "betp.png", "conflict.png", "frames",
-		 "growth.avi", "summary.txt"});
+	TBuildRecord run;
+	run.input = input.counts();
+	run.poses = poses.description();
+	run.scans = inserter.counts();
+	run.frames = growth.frames();
+	run.animationFrames = growth.animationFrames();
+	run.times.reading = input.readingSeconds();
+	run.times.insertion = inserter.seconds();
+	run.times.writing = growth.writingSeconds();
+	writeResults(options, run, *map, out, start);
 
-	if (!options.quiet)
-	{
-		const auto percent = [&stats](double part) {
-			return std::to_string(static_cast<int>(
-					   std::lround(100.0 * part / stats.total))) +
-				"%";
-		};
-		std::cout << kName << ": " << builder.scanAccount() << "; "
-				  << std::fixed << std::setprecision(2) << stats.total
-				  << " s, " << std::setprecision(1)
-				  << perSecond(stats.inserted, stats.total) << " scans/s\n"
-				  << "time: reading " << percent(stats.reading)
-				  << ", insertion " << percent(stats.insertion)
-				  << ", writing " << percent(stats.writing) << "\n"
-				  << "map: " << map->getSizeX() << " x " << map->getSizeY()
-				  << " cells of " << std::defaultfloat
-				  << map->getResolution() << " m; free " << counts.free
-				  << ", occupied " << counts.occupied << ", unknown "
-				  << counts.unknown << ", conflict " << counts.conflict << "\n"
-				  << "pictures: " << out.final("evidential.png") << ", "
-				  << out.final("betp.png") << ", " << out.final("conflict.png")
-				  << "\nsummary: " << out.final("summary.txt") << "\n";
-	}
+	if (!options.quiet) printConsoleSummary(std::cout, run, *map, out);
+}
+}  // namespace
+
+int runBuild(int argc, char** argv, int first)
+{
+	const auto start = SteadyClock::now();
+	TBuildOptions options;
+	if (const auto exitCode = parseOptions(argc, argv, first, options))
+		return *exitCode;
+
+	// From here on temporary files exist: a stop request must let the run
+	// remove them.
+	std::signal(SIGINT, onStopSignal);
+	std::signal(SIGTERM, onStopSignal);
+	build(options, start);
 	return 0;
 }
 

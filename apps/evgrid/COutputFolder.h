@@ -27,6 +27,8 @@ class COutputFolder
 	/** Where to write `name` (a file, or a folder such as "frames") during
 	 * the run. */
 	std::string staged(const std::string& name) const;
+	/** The staging folder itself. */
+	const std::string& stagingFolder() const { return m_staging; }
 	/** The final path of `name`. */
 	std::string final(const std::string& name) const;
 

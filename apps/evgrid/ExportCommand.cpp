@@ -1,6 +1,5 @@
 /* evgrid export: a saved map in other formats. */
 
-#include <mrpt/img/CImage.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/serialization/CArchive.h>
@@ -13,6 +12,7 @@
 #include "CommandLine.h"
 #include "Commands.h"
 #include "MapFiles.h"
+#include "MapOutputs.h"
 
 using mrpt_evidential::CEvidentialGridMap2D;
 using mrpt_evidential::detail::writeFileAtomicallyByName;
@@ -22,38 +22,6 @@ namespace evgrid
 namespace
 {
 const std::string kName = "evgrid export";
-
-void createFolder(const std::filesystem::path& dir)
-{
-	if (dir.empty()) return;
-	std::error_code ec;
-	std::filesystem::create_directories(dir, ec);
-	if (ec)
-		throw std::runtime_error(
-			dir.string() + ": cannot create the folder: " + ec.message());
-}
-
-std::vector<std::string> writePictures(
-	const CEvidentialGridMap2D& map, const std::string& dir)
-{
-	createFolder(dir);
-	std::vector<std::string> written;
-	mrpt::img::CImage picture;
-	const auto save = [&](const std::string& name) {
-		const std::string path = (std::filesystem::path(dir) / name).string();
-		writeFileAtomicallyByName(path, [&picture](const std::string& tmp) {
-			return picture.saveToFile(tmp);
-		});
-		written.push_back(path);
-	};
-	map.getAsEvidentialImage(picture);
-	save("evidential.png");
-	map.getAsBetPImage(picture);
-	save("betp.png");
-	map.getAsConflictImage(picture);
-	save("conflict.png");
-	return written;
-}
 
 /** The format MRPT programs read as `.gridmap` (e.g. pf-localization's
  * map_file): the COccupancyGridMap2D object in MRPT's serialization,
@@ -113,10 +81,11 @@ int runExport(int argc, char** argv, int first)
 	const auto map = loadMap(argMap.getValue());
 	for (auto* arg : {&argGridmap, &argRos})
 		if (arg->isSet())
-			createFolder(std::filesystem::path(arg->getValue()).parent_path());
+			createFolder(
+				std::filesystem::path(arg->getValue()).parent_path().string());
 	std::vector<std::string> written;
 	if (argPng.isSet())
-		for (const auto& path : writePictures(*map, argPng.getValue()))
+		for (const auto& path : savePicturesIn(*map, argPng.getValue()))
 			written.push_back(path);
 	if (argGridmap.isSet())
 	{

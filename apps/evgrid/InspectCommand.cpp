@@ -10,6 +10,7 @@
 #include "CommandLine.h"
 #include "Commands.h"
 #include "MapFiles.h"
+#include "MapOutputs.h"
 
 using mrpt_evidential::CEvidentialGridMap2D;
 using mrpt_evidential::Decision;
@@ -67,13 +68,8 @@ void printCell(const CEvidentialGridMap2D& map, const TPoint& p)
 
 void printMap(const std::string& path, const CEvidentialGridMap2D& map)
 {
-	const auto& g = map.geometry();
-	std::cout << std::setprecision(10) << "map: " << path << "\n"
-			  << "x: [" << g.xMin << ", " << g.xMax() << "] m\n"
-			  << "y: [" << g.yMin << ", " << g.yMax() << "] m\n"
-			  << "resolution: " << g.resolution << " m\n"
-			  << "cells: " << g.sizeX << " x " << g.sizeY << " = "
-			  << g.cellCount() << " (budget " << map.maxCells() << ")\n"
+	std::cout << "map: " << path << "\n"
+			  << map.geometryText()
 			  << "insertions: " << map.insertionCount() << "\n"
 			  << "latest time: ";
 	if (map.insertionCount() == 0)
@@ -84,11 +80,10 @@ void printMap(const std::string& path, const CEvidentialGridMap2D& map)
 				  << mrpt::system::dateTimeToString(
 						 mrpt::Clock::fromDouble(map.latestTime()))
 				  << " UTC)\n";
-	std::cout << "cells by decision:\n";
-	printDecisionCounts(std::cout, map.countDecisions(), g.cellCount());
-	std::cout << std::defaultfloat << "\noptions:\n";
-	map.insertionOptions.dumpToTextStream(std::cout);
-	map.likelihoodOptions.dumpToTextStream(std::cout);
+	printDecisionCounts(
+		std::cout, map.countDecisions(), map.geometry().cellCount());
+	std::cout << "\n";
+	printMapOptions(std::cout, map);
 }
 }  // namespace
 

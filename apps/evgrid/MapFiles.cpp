@@ -1,14 +1,15 @@
-/* evgrid: creating a map from an .ini file, and reading a saved map. */
+/* evgrid: creating a map from an .ini file, and reading and saving map files. */
 
 #include "MapFiles.h"
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/maps/TMetricMapInitializer.h>
+#include <mrpt/serialization/CArchive.h>
+#include <mrpt/serialization/archiveFrom_std_streams.h>
 
 #include <cerrno>
 #include <cstring>
 #include <fstream>
-#include <iomanip>
 #include <stdexcept>
 
 #include "CObjectFileReader.h"
@@ -78,26 +79,13 @@ CEvidentialGridMap2D::Ptr loadMap(const std::string& path)
 	return map;
 }
 
-void printDecisionCounts(
-	std::ostream& os,
-	const mrpt_evidential::CEvidentialGridMap2D::TDecisionCounts& counts,
-	std::size_t cellCount)
+void saveMap(const CEvidentialGridMap2D& map, const std::string& path)
 {
-	const auto flags = os.flags();
-	const auto precision = os.precision();
-	const auto line = [&](const char* what, std::size_t n) {
-		os << "  " << std::left << std::setw(9) << what << std::right
-		   << std::setw(12) << n << "  " << std::fixed << std::setprecision(2)
-		   << std::setw(6)
-		   << 100.0 * static_cast<double>(n) / static_cast<double>(cellCount)
-		   << "%\n";
-	};
-	line("free", counts.free);
-	line("occupied", counts.occupied);
-	line("unknown", counts.unknown);
-	line("conflict", counts.conflict);
-	os.flags(flags);
-	os.precision(precision);
+	std::ofstream f(path, std::ios::binary);
+	auto archive = mrpt::serialization::archiveFrom<std::ostream>(f);
+	archive << map;
+	f.close();
+	if (!f) throw std::runtime_error(path + ": cannot write the map");
 }
 
 }  // namespace evgrid

@@ -1,11 +1,9 @@
-/* evgrid: creating a map from an .ini file, and reading a saved map. */
+/* evgrid: creating a map from an .ini file, and reading and saving map files. */
 #pragma once
 
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 
-#include <cstddef>
 #include <memory>
-#include <ostream>
 #include <string>
 
 namespace evgrid
@@ -28,11 +26,9 @@ std::unique_ptr<mrpt_evidential::CEvidentialGridMap2D> createMapFromConfig(
 mrpt_evidential::CEvidentialGridMap2D::Ptr loadMap(
 	const std::string& path);
 
-/** The four lines of a map's cells by decision, each count with its share of
- * `cellCount`, as `build`'s summary and `inspect` print them. */
-void printDecisionCounts(
-	std::ostream& os,
-	const mrpt_evidential::CEvidentialGridMap2D::TDecisionCounts& counts,
-	std::size_t cellCount);
+/** Writes `map` serialized, as loadMap() reads it back.
+ * \throws std::runtime_error naming `path` if it cannot be written. */
+void saveMap(
+	const mrpt_evidential::CEvidentialGridMap2D& map, const std::string& path);
 
 }  // namespace evgrid

@@ -1,0 +1,67 @@
+/* evgrid: what more than one subcommand writes about a map. */
+
+#include "MapOutputs.h"
+
+#include <filesystem>
+#include <iomanip>
+#include <stdexcept>
+#include <system_error>
+
+using mrpt_evidential::CEvidentialGridMap2D;
+
+namespace evgrid
+{
+void createFolder(const std::string& dir)
+{
+	if (dir.empty()) return;
+	std::error_code ec;
+	std::filesystem::create_directories(dir, ec);
+	if (ec)
+		throw std::runtime_error(
+			dir + ": cannot create the folder: " + ec.message());
+}
+
+std::vector<std::string> savePicturesIn(
+	const CEvidentialGridMap2D& map, const std::string& dir)
+{
+	createFolder(dir);
+	// Appending an empty name gives the folder with exactly one trailing
+	// separator, whether `dir` had one or not.
+	const std::string prefix = (std::filesystem::path(dir) / "").string();
+	map.savePictures(prefix);
+	std::vector<std::string> written;
+	for (const char* name : CEvidentialGridMap2D::pictureNames())
+		written.push_back(prefix + name);
+	return written;
+}
+
+void printDecisionCounts(
+	std::ostream& os, const CEvidentialGridMap2D::TDecisionCounts& counts,
+	std::size_t cellCount)
+{
+	const auto flags = os.flags();
+	const auto precision = os.precision();
+	const auto line = [&](const char* what, std::size_t n) {
+		os << "  " << std::left << std::setw(9) << what << std::right
+		   << std::setw(12) << n << "  " << std::fixed << std::setprecision(2)
+		   << std::setw(6)
+		   << 100.0 * static_cast<double>(n) / static_cast<double>(cellCount)
+		   << "%\n";
+	};
+	os << "cells by decision:\n";
+	line("free", counts.free);
+	line("occupied", counts.occupied);
+	line("unknown", counts.unknown);
+	line("conflict", counts.conflict);
+	os.flags(flags);
+	os.precision(precision);
+}
+
+void printMapOptions(std::ostream& os, const CEvidentialGridMap2D& map)
+{
+	os << std::defaultfloat << "options:\n";
+	map.insertionOptions.dumpToTextStream(os);
+	map.likelihoodOptions.dumpToTextStream(os);
+}
+
+}  // namespace evgrid

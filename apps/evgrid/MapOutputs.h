@@ -1,0 +1,36 @@
+/* evgrid: what more than one subcommand writes about a map. */
+#pragma once
+
+#include <mrpt_evidential/CEvidentialGridMap2D.h>
+
+#include <cstddef>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace evgrid
+{
+/** Creates `dir` and its parents if missing; an empty path is the current
+ * folder. \throws std::runtime_error naming `dir` if it cannot be created. */
+void createFolder(const std::string& dir);
+
+/** Writes the map's pictures (CEvidentialGridMap2D::pictureNames()) into
+ * `dir`, created if missing, each atomically.
+ * \return the paths written. \throws std::runtime_error naming the file or
+ *  folder that cannot be written. */
+std::vector<std::string> savePicturesIn(
+	const mrpt_evidential::CEvidentialGridMap2D& map, const std::string& dir);
+
+/** "cells by decision:" and one line per decision, each count with its share
+ * of `cellCount`, as `build`'s summary and `inspect` print them. */
+void printDecisionCounts(
+	std::ostream& os,
+	const mrpt_evidential::CEvidentialGridMap2D::TDecisionCounts& counts,
+	std::size_t cellCount);
+
+/** "options:" and the map's insertion and likelihood options as .ini
+ * sections. */
+void printMapOptions(
+	std::ostream& os, const mrpt_evidential::CEvidentialGridMap2D& map);
+
+}  // namespace evgrid
