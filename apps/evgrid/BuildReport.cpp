@@ -3,6 +3,8 @@
 
 #include "BuildReport.h"
 
+#include <mrpt_evidential/support/NumberText.h>
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -141,9 +143,8 @@ void printConsoleSummary(
 	   << perSecond(run.scans.inserted, t.total) << " scans/s\n"
 	   << "time: reading " << percent(t.reading) << ", insertion "
 	   << percent(t.insertion) << ", writing " << percent(t.writing) << "\n"
-	   // defaultfloat at the precision of 1 set above: one significant digit.
 	   << "map: " << map.getSizeX() << " x " << map.getSizeY() << " cells of "
-	   << std::defaultfloat << map.getResolution() << " m; free " << d.free
+	   << mrpt_evidential::detail::shortestText(map.getResolution()) << " m; free " << d.free
 	   << ", occupied " << d.occupied << ", unknown " << d.unknown
 	   << ", conflict " << d.conflict << "\n"
 	   << "pictures: ";
