@@ -23,9 +23,9 @@
 #include <tuple>
 #include <vector>
 
-#include "map_bytes.h"
+#include "support/map_bytes.h"
 #include "support/whole_read_archive.h"
-#include "test_helpers.h"
+#include "support/test_helpers.h"
 
 using namespace mrpt_evidential;
 using mrpt_evidential::test::serialize;

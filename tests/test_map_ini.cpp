@@ -6,7 +6,7 @@
 
 #include <sstream>
 
-#include "test_helpers.h"
+#include "support/test_helpers.h"
 
 using namespace mrpt_evidential;
 

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <functional>
 
-#include "test_helpers.h"
+#include "support/test_helpers.h"
 
 using namespace mrpt_evidential;
 using mrpt::obs::CObservation2DRangeScan;

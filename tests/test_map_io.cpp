@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "map_bytes.h"
+#include "support/map_bytes.h"
 #include "support/bounded_child.h"
-#include "test_helpers.h"
+#include "support/test_helpers.h"
 
 using namespace mrpt_evidential;
 using mrpt_evidential::test::serialize;

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "test_helpers.h"
+#include "support/test_helpers.h"
 
 using mrpt::obs::CObservation2DRangeScan;
 using mrpt::poses::CPose2D;

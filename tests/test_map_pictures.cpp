@@ -22,7 +22,7 @@
 #include <sstream>
 #include <string>
 
-#include "test_helpers.h"
+#include "support/test_helpers.h"
 
 using namespace mrpt_evidential;
 namespace fs = std::filesystem;

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <map>
 
-#include "test_helpers.h"
+#include "support/test_helpers.h"
 
 using namespace mrpt_evidential;
 using mrpt::obs::CObservation2DRangeScan;

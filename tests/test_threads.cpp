@@ -22,8 +22,8 @@
 #include <string>
 #include <vector>
 
-#include "map_bytes.h"
-#include "test_helpers.h"
+#include "support/map_bytes.h"
+#include "support/test_helpers.h"
 
 using namespace mrpt_evidential;
 using mrpt_evidential::test::serialize;

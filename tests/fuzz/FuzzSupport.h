@@ -17,7 +17,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "../map_bytes.h"
+#include "../support/map_bytes.h"
 
 namespace fuzz
 {
