@@ -19,6 +19,8 @@
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 #include "insert/PolarToCartesian.h"
 
+#include "../tests/support/scans.h"
+
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -77,20 +79,13 @@ const std::vector<CObservation2DRangeScan>& scans(ScanKind kind)
 	else if (kind == ScanKind::Wide)
 	{
 		// A sensor in a 37 x 27 m hall, off its centre: ranges 7 to 30 m.
-		CObservation2DRangeScan s;
-		s.aperture = static_cast<float>(1.5 * M_PI);
-		s.maxRange = 30.0f;
-		s.resizeScan(1081);
-		for (std::size_t i = 0; i < 1081; ++i)
-		{
-			const double a = s.getScanAngle(i), c = std::cos(a), d = std::sin(a);
+		const auto setup = test::ScanSetup().aperture(1.5 * M_PI).maxRange(30.0);
+		out.push_back(test::scanByAngle(1081, setup, [](double a) {
+			const double c = std::cos(a), d = std::sin(a);
 			const double tx = c > 0 ? 25.0 / c : (c < 0 ? -12.0 / c : HUGE_VAL);
 			const double ty = d > 0 ? 18.0 / d : (d < 0 ? -9.0 / d : HUGE_VAL);
-			const double r = std::min({tx, ty, 29.9});
-			s.setScanRange(i, static_cast<float>(r));
-			s.setScanRangeValidity(i, true);
-		}
-		out.push_back(s);
+			return std::min({tx, ty, 29.9});
+		}));
 	}
 	else
 	{

@@ -1,12 +1,16 @@
-/* The grid's storage: fixed-point cells, geometry, growth and lazy decay. */
+/* The grid's storage: fixed-point cells, geometry, growth and lazy decay;
+ * state a forged file could hand it; a million fusions at the corners of the
+ * algebra and of the decay. */
 #include <mrpt_evidential/grid/EvidentialGridStorage.h>
 #include <mrpt_evidential/grid/QuantizedMass.h>
 #include <mrpt_evidential/algebra/combination.h>
 
 #include <cmath>
 #include <limits>
+#include <random>
+#include <vector>
 
-#include "test_helpers.h"
+#include "support/test_helpers.h"
 
 using namespace mrpt_evidential;
 
@@ -236,4 +240,101 @@ TEST(GridStorage, AssignRejectsInconsistentState)
 	cells[1] = QuantizedCell{};
 	cells[2].stamp = 5;
 	EXPECT_THROW(s.assign(g, cells, {0.0}, 1, 0.0), std::invalid_argument);
+}
+
+TEST(BadFile, InconsistentStorageIsRejected)
+{
+	EvidentialGridStorage s;
+	// Geometries beyond the limits (found by fuzz_deserialize: 4 cells of
+	// 5.6e243 m made the insertion's squared reach infinite).
+	for (const GridGeometry& g :
+		 {GridGeometry{1e308, 0.0, 1e308, 2, 2}, GridGeometry{-2.2e43, -1.0, 5.6e243, 2, 2},
+		  GridGeometry{0.0, 0.0, 1e-9, 2, 2}, GridGeometry{9.9e8, 0.0, 1e7, 2, 2}})
+		EXPECT_THROW(
+			s.assign(g, std::vector<QuantizedCell>(4), {0.0}, 0, 0.0),
+			std::invalid_argument)
+			<< g.xMin << " " << g.resolution;
+	// A file may hold several insertion times only once something was
+	// inserted: the first insertion would start the times again and leave
+	// the cells stamped beyond them.
+	std::vector<QuantizedCell> cells(4);
+	cells[3].stamp = 2;
+	cells[3].free = 30000;
+	EXPECT_THROW(
+		s.assign({0.0, 0.0, 1.0, 2, 2}, cells, {1.0, 2.0, 3.0}, 0, 0.5),
+		std::invalid_argument);
+	EXPECT_NO_THROW(s.assign({0.0, 0.0, 1.0, 2, 2}, cells, {1.0, 2.0, 3.0}, 3, 0.5));
+	s.beginInsertion(10.0);
+	EXPECT_TRUE(s.read(3).isValid(1e-9));
+}
+
+// ---------------------------------------------------------------------------
+// Numbers: a million fusions through the cells, every rule, every conflict
+// handling, total conflict, and decay from none to absurd rates and steps.
+// ---------------------------------------------------------------------------
+
+TEST(Numbers, MillionFusionsThroughTheCellsStayValid)
+{
+	const std::vector<double> rates = {0.0, 1e-300, 1e-9, 0.7, 1e3, 1e9, 1e300};
+	// Time steps: none, tiny, usual, huge, backwards, and 400 years.
+	const std::vector<double> steps = {0.0, 1e-9, 0.05, 1.0, 1e4, -3.0, 1.3e10};
+	const std::vector<Mass> corners = {
+		Mass::vacuous(), Mass::degenerate(), {0, 1, 0, 0}, {0, 0, 1, 0},
+		{0, 0.5, 0.5, 0}, Mass::simpleFree(1e-300), {1e-300, 0, 0, 1 - 1e-300}};
+	const FusionRule rules[] = {
+		FusionRule::Conjunctive, FusionRule::Dempster, FusionRule::Yager,
+		FusionRule::DuboisPrade, FusionRule::Cautious};
+	const ConflictHandling handlings[] = {
+		ConflictHandling::Keep, ConflictHandling::ToUnknown,
+		ConflictHandling::Normalize};
+	const auto handle = [](Mass m, ConflictHandling h) {
+		if (h == ConflictHandling::ToUnknown)
+			m = {0.0, m.free, m.occupied, m.unknown + m.conflict};
+		else if (h == ConflictHandling::Normalize)
+		{
+			const double k = m.free + m.occupied + m.unknown;
+			m = k > kTotalConflictTolerance
+				? Mass{0.0, m.free / k, m.occupied / k, m.unknown / k}
+				: Mass::vacuous();
+		}
+		return m;
+	};
+
+	test::MassGenerator gen(1234);
+	std::uniform_int_distribution<std::size_t> pick(0, 1 << 20);
+	constexpr std::size_t kCells = 64, kPerInsertion = 32;
+	const std::size_t configs = rates.size() * 5 * 3;
+	const std::size_t insertions = 1'000'000 / (configs * kPerInsertion) + 1;
+	std::size_t fusions = 0;
+	for (const double rate : rates)
+		for (const FusionRule rule : rules)
+			for (const ConflictHandling handling : handlings)
+			{
+				EvidentialGridStorage s;
+				s.reset(0, 8, 0, 8, 1.0, kCells);
+				s.setDecayRate(rate);
+				double t = 0.0;
+				for (std::size_t k = 0; k < insertions; ++k)
+				{
+					t += steps[pick(gen.rng()) % steps.size()];
+					s.beginInsertion(t);
+					for (std::size_t j = 0; j < kPerInsertion; ++j, ++fusions)
+					{
+						const std::size_t idx = pick(gen.rng()) % kCells;
+						const Mass obs = pick(gen.rng()) % 3 == 0
+							? corners[pick(gen.rng()) % corners.size()]
+							: gen();
+						const Mass old = s.read(idx);
+						ASSERT_TRUE(old.isValid(1e-9))
+							<< "rate " << rate << " t " << t << ": " << old;
+						const Mass fused = handle(combine(rule, old, obs), handling);
+						ASSERT_TRUE(fused.isValid(1e-9)) << fused;
+						s.write(idx, fused);
+					}
+				}
+				for (std::size_t i = 0; i < kCells; ++i)
+					ASSERT_TRUE(s.read(i).isValid(1e-9))
+						<< "rate " << rate << ": " << s.read(i);
+			}
+	EXPECT_GE(fusions, 1'000'000u);
 }

@@ -1,14 +1,29 @@
-/* CEvidentialGridMap2D created from .ini files through CMultiMetricMap. */
+/* The map's options: CEvidentialGridMap2D created from .ini files through
+ * CMultiMetricMap, and options set wrong or absurdly in code. This suite
+ * links support/largest_allocation.cpp. */
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/maps/CMultiMetricMap.h>
 #include <mrpt/maps/TMetricMapInitializer.h>
+#include <mrpt/poses/CPose3D.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 
+#include <cmath>
+#include <cstddef>
+#include <functional>
 #include <sstream>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
 
-#include "test_helpers.h"
+#include "support/bad_input.h"
+#include "support/largest_allocation.h"
+#include "support/maps.h"
+#include "support/test_helpers.h"
 
 using namespace mrpt_evidential;
+using namespace mrpt_evidential::test;
+using mrpt::poses::CPose3D;
 
 namespace
 {
@@ -193,4 +208,112 @@ TEST(MapIni, InvalidValuesAreRejectedNamingKeyAndValue)
 		EXPECT_NE(message.find("'" + value + "'"), std::string::npos)
 			<< line << " gave: '" << message << "'";
 	}
+}
+
+// ---------------------------------------------------------------------------
+// Options set in code (their .ini readers: above)
+// ---------------------------------------------------------------------------
+
+TEST(BadOptions, InvalidInsertionOptionsStopInsertionNamingTheField)
+{
+	using Options = CEvidentialGridMap2D::TInsertionOptions;
+	const std::vector<std::pair<std::string, std::function<void(Options&)>>> cases = {
+		{"muF", [](Options& o) { o.muF = 1.5; }},
+		{"muO", [](Options& o) { o.muO = kNaN; }},
+		{"decayRate", [](Options& o) { o.decayRate = -1e-9; }},
+		{"decayRate", [](Options& o) { o.decayRate = kInf; }},
+		{"maxRange", [](Options& o) { o.maxRange = 0.0; }},
+		{"imprecision", [](Options& o) { o.imprecision = -0.1; }},
+		{"sectorWidth", [](Options& o) { o.sectorWidth = 7.0; }},
+		{"horizontalTolerance", [](Options& o) { o.horizontalTolerance = -1.0; }},
+		{"growthMargin", [](Options& o) { o.growthMargin = kNaN; }},
+		{"fusionRule", [](Options& o) { o.fusionRule = static_cast<FusionRule>(17); }},
+		{"sensorModel", [](Options& o) { o.sensorModel = static_cast<SensorModel>(9); }},
+		{"conflictHandling",
+		 [](Options& o) { o.conflictHandling = static_cast<ConflictHandling>(5); }},
+	};
+	for (const auto& [field, spoil] : cases)
+	{
+		CEvidentialGridMap2D map = smallMap();
+		spoil(map.insertionOptions);
+		try
+		{
+			map.insertObservation(wall(), CPose3D());
+			ADD_FAILURE() << field << " accepted";
+		}
+		catch (const std::invalid_argument& e)
+		{
+			EXPECT_NE(std::string(e.what()).find(field), std::string::npos)
+				<< e.what();
+		}
+		EXPECT_TRUE(map.isEmpty()) << field;
+		EXPECT_EQ(informedCells(map), 0u) << field;
+	}
+}
+
+TEST(BadOptions, InvalidGeometryIsRejected)
+{
+	// Beyond the limits too: cells below a micrometre or above 1000 km,
+	// bounds beyond 1e9 m.
+	for (const auto& [x0, x1, res] : std::vector<std::tuple<double, double, double>>{
+			 {0, 1, 0.0}, {0, 1, -0.1}, {0, 1, kNaN}, {0, 1, kInf}, {1, 1, 0.1},
+			 {2, 1, 0.1}, {kNaN, 1, 0.1}, {-kInf, 1, 0.1}, {-1e9, 1e9, 1e-9},
+			 {0, 1, 1e-7}, {0, 1e7, 1e7}, {2e9, 2e9 + 1, 0.5}, {-1e10, 0, 1e5}})
+	{
+		EXPECT_THROW(CEvidentialGridMap2D(x0, x1, 0, 1, res), std::invalid_argument)
+			<< x0 << " " << x1 << " " << res;
+		CEvidentialGridMap2D map = smallMap();
+		EXPECT_THROW(map.setSize(x0, x1, 0, 1, res), std::invalid_argument);
+		EXPECT_EQ(map.getSizeX(), 100);  // unchanged
+	}
+	CEvidentialGridMap2D map = smallMap();
+	EXPECT_THROW(map.setMaxCells(0), std::invalid_argument);
+	EXPECT_THROW(map.setMaxCells(9'999), std::invalid_argument);
+	EXPECT_EQ(map.maxCells(), CEvidentialGridMap2D::kDefaultMaxCells);
+}
+
+TEST(BadOptions, WideLikelihoodMarginOnAThinMapAllocatesLittle)
+{
+	// A 10 km corridor of one row, and distances cut at 60 m: a margin of
+	// 1024 cells on every side would make the field 2000 times the map.
+	CEvidentialGridMap2D map(0, 10'000, 0, 0.05, 0.05);
+	map.likelihoodOptions.maxCorrsDistance = 60.0;
+	resetLargestAllocation();
+	const double l = map.computeObservationLikelihood(wall(), CPose3D(5000, 0, 0, 0, 0, 0));
+	EXPECT_TRUE(std::isfinite(l));
+	EXPECT_LT(largestAllocation(), std::size_t(64) << 20);
+}
+
+TEST(BadOptions, ExtremeLikelihoodOptionsGiveNumbers)
+{
+	// Valid, if absurd: squares of these overflow.
+	CEvidentialGridMap2D map = smallMap();
+	ASSERT_TRUE(map.insertObservation(wall(), CPose3D()));
+	auto& o = map.likelihoodOptions;
+	for (const auto& [sigma, cut, zHit, zRandom, range] :
+		 std::vector<std::tuple<double, double, double, double, double>>{
+			 {7.5e252, 7.5e252, 5.5e16, 9.4e11, 9.4e78},
+			 {1e-300, 1e300, 1.0, 0.0, 1e300},
+			 {1e300, 1e-300, 0.0, 1e-300, 1e-300}})
+	{
+		o.sigma = sigma;
+		o.maxCorrsDistance = cut;
+		o.zHit = zHit;
+		o.zRandom = zRandom;
+		o.maxRange = range;
+		const double l = map.computeObservationLikelihood(wall(), CPose3D());
+		EXPECT_FALSE(std::isnan(l)) << "sigma " << sigma << " cut " << cut;
+	}
+}
+
+TEST(BadOptions, LongMaxRangeAtFineResolutionAllocatesLittle)
+{
+	// Dense polar rows would take 1081 x 100,000 masses of 32 bytes (3.5 GB)
+	// whatever the ranges; sparse rows hold a few bins per sector.
+	CEvidentialGridMap2D map(-5, 5, -5, 5, 0.01);
+	map.insertionOptions.maxRange = 1000.0;
+	resetLargestAllocation();
+	EXPECT_NO_THROW(map.insertObservation(
+		arcScan(1081, 3.0, kBadInputSetup.aperture(1.5 * M_PI)), CPose3D()));
+	EXPECT_LT(largestAllocation(), std::size_t(1) << 20);
 }

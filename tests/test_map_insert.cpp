@@ -1,5 +1,5 @@
 /* Inserting scans into CEvidentialGridMap2D: simulated scans with known
- * answers. */
+ * answers, and decay at extreme rates and time jumps. */
 #include <mrpt/core/Clock.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
@@ -9,38 +9,34 @@
 #include <cmath>
 #include <functional>
 
-#include "test_helpers.h"
+#include "support/bad_input.h"
+#include "support/map_assertions.h"
+#include "support/scans.h"
+#include "support/test_helpers.h"
 
 using namespace mrpt_evidential;
 using mrpt::obs::CObservation2DRangeScan;
 using mrpt::poses::CPose3D;
+using test::arcScan;
+using test::kDeg;
+using test::mapIsValid;
+using test::scanByAngle;
+using test::smallMap;
+using test::wall;
 
 namespace
 {
 constexpr double kMuF = 0.7, kMuO = 0.9, kRes = 0.05;
 /** Stored masses are 16-bit fixed point: two steps of slack. */
 constexpr double kStoreTol = 2.0 / kMassScale;
-const double kDeg = M_PI / 180.0;
 
-/** 181 beams over 180 degrees, beam i at angle -90 + i degrees, range given
- * by `rangeAt(angle)`; sensor mounted on the robot at `sensorPose`. */
-CObservation2DRangeScan makeScan(
-	const std::function<double(double)>& rangeAt, double time = 0.0,
-	const CPose3D& sensorPose = CPose3D(0.3, 0.1, 0.2, 10 * M_PI / 180, 0, 0))
-{
-	CObservation2DRangeScan scan;
-	scan.aperture = static_cast<float>(M_PI);
-	scan.maxRange = 30.0f;
-	scan.sensorPose = sensorPose;
-	scan.timestamp = mrpt::Clock::fromDouble(time);
-	scan.resizeScan(181);
-	for (std::size_t i = 0; i < 181; ++i)
-	{
-		scan.setScanRange(i, static_cast<float>(rangeAt(scan.getScanAngle(i))));
-		scan.setScanRangeValidity(i, true);
-	}
-	return scan;
-}
+/** Where the MapInsert tests mount the sensor: 0.3 m ahead of the robot,
+ * 0.1 m to its left, 0.2 m up, turned 10 degrees. */
+const CPose3D kSensorPose(0.3, 0.1, 0.2, 10 * M_PI / 180, 0, 0);
+/** How they take scans: 181 beams over 180 degrees, beam i at angle
+ * -90 + i degrees, maxRange 30 m, at time 0 s unless a test sets another. */
+const test::ScanSetup kSetup = test::ScanSetup().maxRange(30.0).at(0.0).sensorPose(kSensorPose);
+constexpr std::size_t kBeams = 181;
 
 CEvidentialGridMap2D makeMap(SensorModel model = SensorModel::MultiEcho)
 {
@@ -99,7 +95,7 @@ Mass strongestOccupiedNear(
 TEST(MapInsert, OneScanAtARotatedTranslatedPose)
 {
 	CEvidentialGridMap2D map = makeMap();
-	const auto scan = makeScan([](double) { return 4.0; });
+	const auto scan = arcScan(kBeams, 4.0, kSetup);
 	ASSERT_TRUE(map.insertObservation(scan, kRobot));
 	EXPECT_FALSE(map.isEmpty());
 	const CPose3D sensor = kRobot + scan.sensorPose;
@@ -153,7 +149,7 @@ TEST(MapInsert, ImpreciseModelDrawsSolidWalls)
 	// every ray then crosses a cell that decides occupied.
 	CEvidentialGridMap2D map = makeMap(SensorModel::ImpreciseMultiEcho);
 	map.insertionOptions.imprecision = kRes;
-	const auto scan = makeScan([](double) { return 4.0; });
+	const auto scan = arcScan(kBeams, 4.0, kSetup);
 	map.insertObservation(scan, kRobot);
 	const CPose3D sensor = kRobot + scan.sensorPose;
 	for (double a = -88 * kDeg; a <= 88 * kDeg; a += 0.5 * kDeg)
@@ -167,7 +163,7 @@ TEST(MapInsert, ImpreciseModelDrawsSolidWalls)
 TEST(MapInsert, TwoIdenticalScansReinforceConjunctively)
 {
 	CEvidentialGridMap2D map = makeMap();
-	const auto scan = makeScan([](double) { return 4.0; });
+	const auto scan = arcScan(kBeams, 4.0, kSetup);
 	map.insertObservation(scan, kRobot);
 	map.insertObservation(scan, kRobot);
 	const CPose3D sensor = kRobot + scan.sensorPose;
@@ -191,8 +187,8 @@ TEST(MapInsert, CellsStoreWithinQuantization)
 	// Cells are fused and stored once per scan: the exact mass after one scan
 	// differs from muF by at most the fixed-point step.
 	CEvidentialGridMap2D map = makeMap();
-	map.insertObservation(makeScan([](double) { return 4.0; }), kRobot);
-	const CPose3D sensor = kRobot + makeScan([](double) { return 4.0; }).sensorPose;
+	map.insertObservation(arcScan(kBeams, 4.0, kSetup), kRobot);
+	const CPose3D sensor = kRobot + kSensorPose;
 	EXPECT_NEAR(massAtPolar(map, sensor, 2.0, 0.3).free, kMuF, 1e-5);
 }
 
@@ -205,10 +201,10 @@ TEST(MapInsert, BulkCellsTrackDoublePrecisionOverManyScans)
 	CEvidentialGridMap2D map = makeMap(SensorModel::ReinforcedMultiEcho);
 	const double rate = 0.05;
 	map.insertionOptions.decayRate = rate;
-	const CPose3D sensor = kRobot + makeScan([](double) { return 2.0; }).sensorPose;
+	const CPose3D sensor = kRobot + kSensorPose;
 	double t = 0.0;
 	for (int i = 0; i < 20; ++i)
-		map.insertObservation(makeScan([](double) { return 2.0; }, t += 0.1), kRobot);
+		map.insertObservation(arcScan(kBeams, 2.0, kSetup.at(t += 0.1)), kRobot);
 	Mass reference = massAtPolar(map, sensor, 2.0, 0.3);
 	ASSERT_GT(reference.occupied, 0.1);
 	const CPose3D away = kRobot + CPose3D(0, 0, 0, M_PI, 0, 0);
@@ -216,7 +212,7 @@ TEST(MapInsert, BulkCellsTrackDoublePrecisionOverManyScans)
 	for (int i = 1; i <= 1000; ++i)
 	{
 		const bool looksAway = i % 10 == 0;
-		map.insertObservation(makeScan([](double) { return 4.0; }, t += 0.1), looksAway ? away : kRobot);
+		map.insertObservation(arcScan(kBeams, 4.0, kSetup.at(t += 0.1)), looksAway ? away : kRobot);
 		if (looksAway) continue;
 		reference = conjunctive(
 			discount(reference, 1.0 - std::exp(-rate * (t - lastSeen))),
@@ -235,9 +231,10 @@ TEST(MapInsert, ObstacleThatAppearsGivesConflict)
 	{
 		CEvidentialGridMap2D map = makeMap();
 		map.insertionOptions.conflictHandling = handling;
-		map.insertObservation(makeScan([](double) { return 4.0; }), kRobot);
+		map.insertObservation(arcScan(kBeams, 4.0, kSetup), kRobot);
 		// Something now stands at 3 m in front of the sensor.
-		const auto scan = makeScan([](double a) { return std::abs(a) < 0.3 ? 3.0 : 4.0; });
+		const auto scan =
+			scanByAngle(kBeams, kSetup, [](double a) { return std::abs(a) < 0.3 ? 3.0 : 4.0; });
 		map.insertObservation(scan, kRobot);
 		const CPose3D sensor = kRobot + scan.sensorPose;
 		const Mass m = massAtPolar(map, sensor, 3.025, 0.0);
@@ -271,7 +268,9 @@ TEST(MapInsert, EveryFusionRuleKeepsCellsValid)
 			map.insertionOptions.imprecision = 0.12;
 			for (int k = 0; k < 4; ++k)
 				map.insertObservation(
-					makeScan([k](double a) { return 2.5 + 0.5 * std::sin(3 * a + k); }, k),
+					scanByAngle(
+						kBeams, kSetup.at(k),
+						[k](double a) { return 2.5 + 0.5 * std::sin(3 * a + k); }),
 					CPose3D(0.1 * k, 0.05 * k, 0, 0.2 * k, 0, 0));
 			for (std::size_t i = 0; i < map.geometry().cellCount(); ++i)
 				ASSERT_TRUE(map.storage().read(i).isValid(1e-9));
@@ -285,7 +284,7 @@ TEST(MapInsert, CautiousRuleIgnoresRepeatedEvidence)
 {
 	CEvidentialGridMap2D map = makeMap();
 	map.insertionOptions.fusionRule = FusionRule::Cautious;
-	const auto scan = makeScan([](double) { return 4.0; });
+	const auto scan = arcScan(kBeams, 4.0, kSetup);
 	for (int k = 0; k < 3; ++k) map.insertObservation(scan, kRobot);
 	const CPose3D sensor = kRobot + scan.sensorPose;
 	EXPECT_MASS_NEAR(
@@ -297,14 +296,14 @@ TEST(MapInsert, DecayFollowsDataTime)
 	CEvidentialGridMap2D map = makeMap();
 	const double rate = 0.3;
 	map.insertionOptions.decayRate = rate;
-	const auto first = makeScan([](double) { return 4.0; }, 1000.0);
+	const auto first = arcScan(kBeams, 4.0, kSetup.at(1000.0));
 	map.insertObservation(first, kRobot);
 	const CPose3D sensor = kRobot + first.sensorPose;
 	// Later scans look the other way: the first scan's cells are not seen.
 	const CPose3D turned = kRobot + CPose3D(0, 0, 0, M_PI, 0, 0);
 	for (const double t : {1000.5, 1002.0, 1005.0})
 	{
-		map.insertObservation(makeScan([](double) { return 4.0; }, t), turned);
+		map.insertObservation(arcScan(kBeams, 4.0, kSetup.at(t)), turned);
 		const double expectedFree = kMuF * std::exp(-rate * (t - 1000.0));
 		const Mass m = massAtPolar(map, sensor, 2.0, 0.3);
 		EXPECT_NEAR(m.free, expectedFree, kStoreTol) << "t " << t;
@@ -318,7 +317,7 @@ TEST(MapInsert, DecayFollowsDataTime)
 	again.insertionOptions.decayRate = rate;
 	again.insertObservation(first, kRobot);
 	for (const double t : {1000.5, 1002.0, 1005.0})
-		again.insertObservation(makeScan([](double) { return 4.0; }, t), turned);
+		again.insertObservation(arcScan(kBeams, 4.0, kSetup.at(t)), turned);
 	for (std::size_t i = 0; i < map.geometry().cellCount(); ++i)
 		ASSERT_EQ(map.storage().read(i), again.storage().read(i));
 }
@@ -329,9 +328,9 @@ TEST(MapInsert, UpsideDownSensorMirrorsTheScan)
 	map.insertionOptions.imprecision = kRes;  // solid walls, see above
 	// Beams to the sensor's left return at 2 m, to its right at 4 m. Mounted
 	// upside down (roll 180 degrees), its left is the robot's right.
-	const auto scan = makeScan(
-		[](double a) { return a > 0 ? 2.0 : 4.0; }, 0.0,
-		CPose3D(0, 0, 0, 0, 0, M_PI));
+	const auto scan = scanByAngle(
+		kBeams, kSetup.sensorPose(CPose3D(0, 0, 0, 0, 0, M_PI)),
+		[](double a) { return a > 0 ? 2.0 : 4.0; });
 	ASSERT_TRUE(map.insertObservation(scan, CPose3D()));
 	const CPose3D robot;
 	EXPECT_EQ(decide(strongestOccupiedNear(map, robot, -45 * kDeg, 2.0)), Decision::Occupied);
@@ -346,8 +345,8 @@ TEST(MapInsert, IgnoresWhatItCannotUse)
 	mrpt::obs::CObservationOdometry odometry;
 	EXPECT_FALSE(map.insertObservation(odometry, CPose3D()));
 	// A sensor pitched 5 degrees is not a planar scan.
-	const auto tilted = makeScan(
-		[](double) { return 4.0; }, 0.0, CPose3D(0, 0, 0, 0, 5 * M_PI / 180, 0));
+	const auto tilted =
+		arcScan(kBeams, 4.0, kSetup.sensorPose(CPose3D(0, 0, 0, 0, 5 * M_PI / 180, 0)));
 	EXPECT_FALSE(map.insertObservation(tilted, CPose3D()));
 	EXPECT_TRUE(map.isEmpty());
 	map.insertionOptions.horizontalTolerance = 10 * M_PI / 180;
@@ -358,7 +357,7 @@ TEST(MapInsert, GridGrowsToHoldScansWithinItsBudget)
 {
 	CEvidentialGridMap2D map(-1, 1, -1, 1, kRes);
 	map.insertionOptions.growthMargin = 1.0;
-	const auto scan = makeScan([](double) { return 4.0; });
+	const auto scan = arcScan(kBeams, 4.0, kSetup);
 	map.insertObservation(scan, kRobot);
 	const CPose3D sensor = kRobot + scan.sensorPose;
 	// The whole fan, walls included, now lies inside the grid.
@@ -384,8 +383,37 @@ TEST(MapInsert, GridGrowsToHoldScansWithinItsBudget)
 TEST(MapInsert, ClearForgetsEverything)
 {
 	CEvidentialGridMap2D map = makeMap();
-	map.insertObservation(makeScan([](double) { return 4.0; }), kRobot);
+	map.insertObservation(arcScan(kBeams, 4.0, kSetup), kRobot);
 	map.clear();
 	EXPECT_TRUE(map.isEmpty());
 	EXPECT_EQ(map.countDecisions().unknown, map.geometry().cellCount());
+}
+
+// ---------------------------------------------------------------------------
+// Decay at extreme rates and time jumps
+// ---------------------------------------------------------------------------
+
+TEST(Numbers, MapWithExtremeDecayAndTimeJumpsStaysValid)
+{
+	// Through the map's own insertion: a scan without a time stamp (it reads
+	// as time 0, 1970), then scans from now, some going back in time, with
+	// decay rates from tiny to absurd.
+	for (const double rate : {1e-12, 0.1, 1e6, 1e300})
+		for (const FusionRule rule : {FusionRule::Conjunctive, FusionRule::Dempster})
+		{
+			CEvidentialGridMap2D map = smallMap();
+			map.insertionOptions.decayRate = rate;
+			map.insertionOptions.fusionRule = rule;
+			auto first = wall(3.0);
+			first.timestamp = mrpt::Clock::time_point();
+			ASSERT_TRUE(map.insertObservation(first, CPose3D()));
+			double t = 1.7e9;
+			for (const double step : {0.0, 0.1, 1e-6, -10.0, 5.0, 1e5})
+			{
+				t += step;
+				ASSERT_TRUE(map.insertObservation(wall(2.5, t), CPose3D()));
+				ASSERT_TRUE(mapIsValid(map)) << "rate " << rate << " step " << step;
+			}
+			EXPECT_GT(map.countDecisions().free, 100u) << "rate " << rate;
+		}
 }

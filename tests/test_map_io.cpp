@@ -1,13 +1,13 @@
 /* Serialization of CEvidentialGridMap2D: round trips through memory, files
  * and CMultiMetricMap copies; corrupted, truncated and unknown-version streams
- * are rejected. */
+ * are rejected, and so are forged ones that carry a valid checksum. This
+ * suite links support/largest_allocation.cpp. */
 
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/maps/CMultiMetricMap.h>
-#include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
@@ -19,36 +19,29 @@
 #include <string>
 #include <vector>
 
-#include "map_bytes.h"
+#include "support/bad_input.h"
 #include "support/bounded_child.h"
-#include "test_helpers.h"
+#include "support/largest_allocation.h"
+#include "support/map_bytes.h"
+#include "support/scans.h"
+#include "support/test_helpers.h"
 
 using namespace mrpt_evidential;
-using mrpt_evidential::test::serialize;
 using mrpt_evidential::test::deserialize;
+using mrpt_evidential::test::largestAllocation;
+using mrpt_evidential::test::resetLargestAllocation;
+using mrpt_evidential::test::serialize;
+using mrpt_evidential::test::wall;
+using mrpt::poses::CPose3D;
 using mrpt::serialization::archiveFrom;
 namespace fs = std::filesystem;
 
 namespace
 {
-/** A 180-degree scan of 181 rays, taken at data time t, whose ranges follow
- * range(ray index). */
-template <typename RangeFn>
-mrpt::obs::CObservation2DRangeScan makeScan(double t, RangeFn range)
-{
-	mrpt::obs::CObservation2DRangeScan scan;
-	scan.aperture = static_cast<float>(M_PI);
-	scan.rightToLeft = true;
-	scan.maxRange = 10.0f;
-	scan.resizeScan(181);
-	for (std::size_t i = 0; i < 181; ++i)
-	{
-		scan.setScanRange(i, static_cast<float>(range(i)));
-		scan.setScanRangeValidity(i, true);
-	}
-	scan.timestamp = mrpt::Clock::fromDouble(t);
-	return scan;
-}
+/** How these tests take scans: 181 rays over 180 degrees, maxRange 10 m;
+ * each test gives the time and the ranges, a function of the ray index. */
+const test::ScanSetup kSetup = test::ScanSetup().maxRange(10.0);
+constexpr std::size_t kRays = 181;
 
 /** A map with non-default options in every group and three scans inserted at
  * different poses and times, so that decay, stamps and growth all show. */
@@ -67,13 +60,16 @@ CEvidentialGridMap2D makeMap(double resolution = 0.1)
 	map.likelihoodOptions.unknownAsNeutral = false;
 	map.genericMapParams.enableObservationLikelihood = false;
 	map.insertObservation(
-		makeScan(1000.0, [](std::size_t i) { return 2.0 + 0.005 * i; }),
+		test::scanByIndex(
+			kRays, kSetup.at(1000.0), [](std::size_t i) { return 2.0 + 0.005 * i; }),
 		mrpt::poses::CPose3D(0, 0, 0, 0, 0, 0));
 	map.insertObservation(
-		makeScan(1001.5, [](std::size_t i) { return 2.5 - 0.004 * i; }),
+		test::scanByIndex(
+			kRays, kSetup.at(1001.5), [](std::size_t i) { return 2.5 - 0.004 * i; }),
 		mrpt::poses::CPose3D(0.4, -0.3, 0, 0.5, 0, 0));
 	map.insertObservation(
-		makeScan(1003.25, [](std::size_t i) { return 1.5 + (i % 7) * 0.1; }),
+		test::scanByIndex(
+			kRays, kSetup.at(1003.25), [](std::size_t i) { return 1.5 + (i % 7) * 0.1; }),
 		mrpt::poses::CPose3D(-0.2, 0.6, 0, -2.0, 0, 0));
 	return map;
 }
@@ -137,13 +133,20 @@ void expectSameMap(const CEvidentialGridMap2D& a, const CEvidentialGridMap2D& b)
 				<< "at (" << cx << ", " << cy << ")";
 }
 
-/** A fresh scratch directory for one test. */
-fs::path scratchDir(const std::string& name)
+/** Writes the checksum a stream's payload should have, as a forger would:
+ * over everything between MRPT's header (class name and version) and the
+ * checksum, which precedes MRPT's one-byte end marker. */
+void reseal(std::vector<std::uint8_t>& bytes)
 {
-	const fs::path dir = fs::path(TEST_SCRATCH_DIR) / "map_io" / name;
-	fs::remove_all(dir);
-	fs::create_directories(dir);
-	return dir;
+	const std::size_t begin = 1 + (bytes[0] & 0x7F) + 1, end = bytes.size() - 9;
+	const std::uint64_t h = test::payloadChecksum(bytes.data() + begin, end - begin);
+	for (int i = 0; i < 8; ++i) bytes[end + i] = static_cast<std::uint8_t>(h >> (8 * i));
+}
+
+/** Puts the n low bytes of v at `at`, little-endian. */
+void putLE(std::vector<std::uint8_t>& bytes, std::size_t at, std::uint64_t v, int n)
+{
+	for (int i = 0; i < n; ++i) bytes[at + i] = static_cast<std::uint8_t>(v >> (8 * i));
 }
 }  // namespace
 
@@ -169,7 +172,7 @@ TEST(MapIO, MemoryRoundTripKeepsEverything)
 	// The copy keeps working as a map: the next insertion decays and fuses
 	// exactly as in the original.
 	CEvidentialGridMap2D next = original;
-	const auto scan = makeScan(1004.0, [](std::size_t) { return 1.8; });
+	const auto scan = test::arcScan(kRays, 1.8, kSetup.at(1004.0));
 	next.insertObservation(scan, mrpt::poses::CPose3D());
 	copy.insertObservation(scan, mrpt::poses::CPose3D());
 	expectSameMap(next, copy);
@@ -198,7 +201,7 @@ TEST(MapIO, GenericObjectReadFindsTheClass)
 
 TEST(MapIO, FileRoundTripThroughSavedRepresentation)
 {
-	const fs::path dir = scratchDir("file_round_trip");
+	const fs::path dir = test::scratchDir("map_io", "file_round_trip");
 	const CEvidentialGridMap2D original = makeMap();
 	const std::string prefix = (dir / "saved").string();
 	original.saveMetricMapRepresentationToFile(prefix);
@@ -338,10 +341,12 @@ TEST(MapIO, MultiMetricMapCopyHoldsTheSameCells)
 	EXPECT_EQ(map->insertionOptions.fusionRule, FusionRule::Dempster);
 	map->genericMapParams.enableObservationLikelihood = false;
 	original.insertObservation(
-		makeScan(50.0, [](std::size_t i) { return 2.0 + 0.01 * i; }),
+		test::scanByIndex(
+			kRays, kSetup.at(50.0), [](std::size_t i) { return 2.0 + 0.01 * i; }),
 		mrpt::poses::CPose3D(0.1, 0.2, 0, 0.3, 0, 0));
 	original.insertObservation(
-		makeScan(51.0, [](std::size_t i) { return 2.2 - 0.003 * i; }),
+		test::scanByIndex(
+			kRays, kSetup.at(51.0), [](std::size_t i) { return 2.2 - 0.003 * i; }),
 		mrpt::poses::CPose3D(-0.3, 0.1, 0, 1.0, 0, 0));
 	ASSERT_EQ(map->insertionCount(), 2u);
 
@@ -350,4 +355,82 @@ TEST(MapIO, MultiMetricMapCopyHoldsTheSameCells)
 	ASSERT_TRUE(copied);
 	EXPECT_NE(copied.get(), map.get());
 	expectSameMap(*map, *copied);
+}
+
+// ---------------------------------------------------------------------------
+// Forged files: damage a checksum cannot see
+// ---------------------------------------------------------------------------
+
+TEST(BadFile, ForgedHugeGridAllocatesOnlyWhatTheStreamHolds)
+{
+	// A stream whose header claims 30,000 x 30,000 cells (7.2 GB) within a
+	// budget it also claims, then ends: the read must fail having allocated
+	// about what the stream held, not the 7.2 GB.
+	auto bytes = serialize(CEvidentialGridMap2D(0, 1, 0, 1, 0.5));
+	// After MRPT's header: f64 xMin, yMin, resolution, i32 sizeX, sizeY,
+	// u64 maxCells (little-endian).
+	const std::size_t geometry = 1 + (bytes[0] & 0x7F) + 1;
+	putLE(bytes, geometry + 24, 30'000, 4);
+	putLE(bytes, geometry + 28, 30'000, 4);
+	putLE(bytes, geometry + 32, 900'000'000, 8);
+	for (const std::size_t keep : {bytes.size(), bytes.size() - 40})
+	{
+		mrpt::io::CMemoryStream in;
+		in.assignMemoryNotOwn(bytes.data(), keep);
+		CEvidentialGridMap2D target;
+		resetLargestAllocation();
+		try
+		{
+			archiveFrom(in) >> target;
+			ADD_FAILURE() << "a forged stream was read";
+		}
+		catch (const std::bad_alloc&)
+		{
+			ADD_FAILURE() << "tried to allocate the claimed size";
+		}
+		catch (const std::exception&)
+		{
+		}
+		EXPECT_LT(largestAllocation(), std::size_t(64) << 20) << keep << " bytes";
+		EXPECT_EQ(target.getSizeX(), 200);  // unchanged
+	}
+}
+
+TEST(BadFile, ResealedStreamsStillPassTheChecks)
+{
+	// A checksum stops damage, not a forger: what it covers is checked too.
+	CEvidentialGridMap2D map(0, 1, 0, 1, 0.5);
+	map.insertionOptions.decayRate = 0.1;
+	ASSERT_TRUE(map.insertObservation(wall(0.6, 5.0), CPose3D()));
+	ASSERT_TRUE(map.insertObservation(wall(0.6, 6.0), CPose3D()));
+	const auto good = serialize(map);
+	{
+		auto bytes = good;
+		reseal(bytes);
+		ASSERT_EQ(bytes, good);  // reseal() computes what the map wrote
+		CEvidentialGridMap2D back;
+		deserialize(bytes, back);
+		EXPECT_EQ(back.insertionCount(), 2u);
+	}
+	const std::size_t geometry = 1 + (good[0] & 0x7F) + 1;
+	const std::size_t cells = static_cast<std::size_t>(map.getSizeX() * map.getSizeY());
+	const std::size_t insertions = good.size() - 9 - cells * 8 - 16;
+	struct Forgery
+	{
+		const char* what;
+		std::size_t at;
+		std::uint64_t value;
+		int bytes;
+	};
+	for (const Forgery& f :
+		 {Forgery{"cell budget", geometry + 32, std::uint64_t(1) << 62, 8},
+		  Forgery{"insertion times", insertions, 0, 8}})
+	{
+		auto bytes = good;
+		putLE(bytes, f.at, f.value, f.bytes);
+		reseal(bytes);
+		CEvidentialGridMap2D target;
+		EXPECT_THROW(deserialize(bytes, target), std::exception) << f.what;
+		EXPECT_TRUE(target.isEmpty());
+	}
 }

@@ -3,7 +3,6 @@
  * cache invalidation and concurrent first use. */
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
-#include <mrpt/core/Clock.h>
 #include <mrpt/maps/CSimpleMap.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
@@ -22,12 +21,14 @@
 #include <string>
 #include <vector>
 
-#include "test_helpers.h"
+#include "support/scans.h"
+#include "support/test_helpers.h"
 
 using mrpt::obs::CObservation2DRangeScan;
 using mrpt::poses::CPose2D;
 using mrpt::poses::CPose3D;
 using mrpt_evidential::CEvidentialGridMap2D;
+namespace test = mrpt_evidential::test;
 
 namespace
 {
@@ -216,28 +217,23 @@ double castRay(
 	return best;
 }
 
-/** A 270-degree, 541-ray scan taken by a robot at `robot` whose sensor sits
- * 0.2 m ahead of it; rays beyond 30 m have no return. */
-CObservation2DRangeScan makeScan(
+/** A 270-degree, 541-ray scan of `walls` taken by a robot at `robot` whose
+ * sensor sits 0.2 m ahead of it; rays beyond 30 m have no return. */
+CObservation2DRangeScan castScan(
 	const std::vector<Segment>& walls, const CPose2D& robot, double time)
 {
-	CObservation2DRangeScan scan;
-	scan.aperture = static_cast<float>(deg(270));
-	scan.rightToLeft = true;
-	scan.maxRange = 30.0f;
-	scan.sensorPose = CPose3D(0.2, 0.0, 0.3, 0.0, 0.0, 0.0);
-	scan.timestamp = mrpt::Clock::fromDouble(time);
-	scan.resizeScan(541);
+	constexpr float kMaxRange = 30.0f;
 	const CPose2D sensor = robot + CPose2D(0.2, 0.0, 0.0);
-	for (std::size_t i = 0; i < scan.getScanSize(); ++i)
-	{
-		const double r = castRay(
-			walls, sensor.x(), sensor.y(), sensor.phi() + scan.getScanAngle(i));
-		const bool valid = r < scan.maxRange;
-		scan.setScanRange(i, valid ? static_cast<float>(r) : scan.maxRange);
-		scan.setScanRangeValidity(i, valid);
-	}
-	return scan;
+	const auto setup = test::ScanSetup()
+							.aperture(deg(270))
+							.maxRange(kMaxRange)
+							.sensorPose(CPose3D(0.2, 0.0, 0.3, 0.0, 0.0, 0.0))
+							.at(time);
+	return test::scanByAngle(541, setup, [&](double angle) {
+		const double r = castRay(walls, sensor.x(), sensor.y(), sensor.phi() + angle);
+		const bool valid = r < kMaxRange;
+		return test::Beam{valid ? static_cast<float>(r) : kMaxRange, valid};
+	});
 }
 
 const std::vector<CPose2D>& mappingPoses()
@@ -257,7 +253,7 @@ void buildRoomMap(CEvidentialGridMap2D& map)
 	const auto walls = room();
 	double t = 1.0;
 	for (const CPose2D& p : mappingPoses())
-		ASSERT_TRUE(map.insertObservation(makeScan(walls, p, t++), CPose3D(p)));
+		ASSERT_TRUE(map.insertObservation(castScan(walls, p, t++), CPose3D(p)));
 }
 
 double score(
@@ -297,7 +293,7 @@ TEST(Likelihood, ScanScoresBestAtItsOwnPose)
 		 {CPose2D(0.5, -1.0, deg(30)), CPose2D(-1.0, 0.8, deg(135)),
 		  mappingPoses()[1]})
 	{
-		const auto scan = makeScan(walls, truth, 100.0);
+		const auto scan = castScan(walls, truth, 100.0);
 		const double own = score(map, scan, truth);
 		EXPECT_TRUE(std::isfinite(own));
 		for (const auto& [name, moved] : perturbations(truth))
@@ -314,7 +310,7 @@ TEST(Likelihood, OnlyScansCanBeScored)
 	odometry.odometry = CPose2D(1.0, 0.0, 0.0);
 	EXPECT_FALSE(map.canComputeObservationLikelihood(odometry));
 	EXPECT_EQ(map.computeObservationLikelihood(odometry, CPose3D()), 0.0);
-	const auto scan = makeScan(room(), CPose2D(), 1.0);
+	const auto scan = castScan(room(), CPose2D(), 1.0);
 	EXPECT_TRUE(map.canComputeObservationLikelihood(scan));
 }
 
@@ -322,12 +318,12 @@ TEST(Likelihood, ScanWithoutValidRaysScoresZero)
 {
 	CEvidentialGridMap2D map;
 	buildRoomMap(map);
-	auto scan = makeScan(room(), CPose2D(), 1.0);
+	auto scan = castScan(room(), CPose2D(), 1.0);
 	for (std::size_t i = 0; i < scan.getScanSize(); ++i)
 		scan.setScanRangeValidity(i, false);
 	EXPECT_EQ(score(map, scan, CPose2D()), 0.0);
 	// Rays at or beyond likelihoodOptions.maxRange are not scored either.
-	const auto valid = makeScan(room(), CPose2D(), 1.0);
+	const auto valid = castScan(room(), CPose2D(), 1.0);
 	map.likelihoodOptions.maxRange = 0.1;
 	EXPECT_EQ(score(map, valid, CPose2D()), 0.0);
 }
@@ -337,7 +333,7 @@ TEST(Likelihood, NeverSeenCellsAndDecimation)
 	// Nothing inserted: every ray ends in a never-seen cell, far from any
 	// obstacle, so every scored ray gives the same, known value.
 	CEvidentialGridMap2D map;
-	const auto scan = makeScan(room(), CPose2D(), 1.0);
+	const auto scan = castScan(room(), CPose2D(), 1.0);
 	std::size_t validRays = 0, validDecimated = 0;
 	for (std::size_t i = 0; i < scan.getScanSize(); ++i)
 		if (scan.getScanRangeValidity(i))
@@ -369,7 +365,7 @@ TEST(Likelihood, TinySigmaStaysFinite)
 	CEvidentialGridMap2D map;
 	buildRoomMap(map);
 	const CPose2D pose(0.5, -1.0, deg(30));
-	const auto scan = makeScan(room(), pose, 100.0);
+	const auto scan = castScan(room(), pose, 100.0);
 	map.likelihoodOptions.sigma = 1e-4;
 	EXPECT_TRUE(std::isfinite(score(map, scan, pose)));
 	map.likelihoodOptions.zRandom = 0.0;
@@ -396,11 +392,8 @@ void checkFieldAgainstBruteForce(CEvidentialGridMap2D& map)
 		}
 	ASSERT_GT(obstacles.size(), 100u);
 
-	CObservation2DRangeScan ray;
-	ray.aperture = 0.0f;
-	ray.resizeScan(1);
-	ray.setScanRange(0, 1.0f);
-	ray.setScanRangeValidity(0, true);
+	const CObservation2DRangeScan ray =
+		test::arcScan(1, 1.0, test::ScanSetup().aperture(0.0));
 
 	std::mt19937 rng(7);
 	// Some probes land outside the map, in the field's margin and beyond.
@@ -462,17 +455,8 @@ TEST(Likelihood, FieldMatchesBruteForce)
  * the origin at time t. */
 CObservation2DRangeScan wallScan(double wallX, double t)
 {
-	CObservation2DRangeScan scan;
-	scan.aperture = static_cast<float>(deg(90));
-	scan.timestamp = mrpt::Clock::fromDouble(t);
-	scan.resizeScan(181);
-	for (std::size_t i = 0; i < scan.getScanSize(); ++i)
-	{
-		scan.setScanRange(
-			i, static_cast<float>(wallX / std::cos(scan.getScanAngle(i))));
-		scan.setScanRangeValidity(i, true);
-	}
-	return scan;
+	return test::flatWallScan(
+		181, wallX, test::ScanSetup().aperture(deg(90)).at(t));
 }
 
 TEST(Likelihood, ConflictIsSetAsideToFindObstacles)
@@ -488,10 +472,7 @@ TEST(Likelihood, ConflictIsSetAsideToFindObstacles)
 	const double share = m.occupied / (m.free + m.occupied + m.unknown);
 	ASSERT_GT(share, map.likelihoodOptions.occupiedMass);
 
-	CObservation2DRangeScan ray;
-	ray.resizeScan(1);
-	ray.setScanRange(0, 1.0f);
-	ray.setScanRangeValidity(0, true);
+	const CObservation2DRangeScan ray = test::arcScan(1, 1.0);
 	const Options& o = map.likelihoodOptions;
 	// Its occupied share wins: a ray ending there is a hit.
 	EXPECT_NEAR(
@@ -512,10 +493,10 @@ TEST(Likelihood, InsertionInvalidatesTheCache)
 	CEvidentialGridMap2D map;
 	const auto walls = room();
 	ASSERT_TRUE(
-		map.insertObservation(makeScan(walls, CPose2D(), 1.0), CPose3D()));
+		map.insertObservation(castScan(walls, CPose2D(), 1.0), CPose3D()));
 	// A scan looking the other way mostly ends in cells not seen yet.
 	const CPose2D behind(-2.5, 0.5, deg(200));
-	const auto scan = makeScan(walls, behind, 2.0);
+	const auto scan = castScan(walls, behind, 2.0);
 	const double before = score(map, scan, behind);
 	EXPECT_EQ(before, score(map, scan, behind));  // cached, same answer
 	ASSERT_TRUE(map.insertObservation(scan, CPose3D(behind)));
@@ -537,7 +518,7 @@ TEST(Likelihood, ConcurrentFirstUseGivesIdenticalResults)
 {
 	const auto walls = room();
 	const CPose2D pose(0.5, -1.0, deg(30));
-	const auto scan = makeScan(walls, pose, 100.0);
+	const auto scan = castScan(walls, pose, 100.0);
 	const CPose2D moved = perturbations(pose)[0].second;
 	for (int round = 0; round < 5; ++round)
 	{
@@ -545,7 +526,7 @@ TEST(Likelihood, ConcurrentFirstUseGivesIdenticalResults)
 		buildRoomMap(map);  // the field is not built yet
 		constexpr int kThreads = 4;
 		std::vector<double> results(kThreads * 3);
-		mrpt_evidential::test::runTogether(kThreads, [&](int t) {
+		test::runTogether(kThreads, [&](int t) {
 			results[t * 3] = score(map, scan, pose);
 			results[t * 3 + 1] = score(map, scan, moved);
 			results[t * 3 + 2] = score(map, scan, pose);

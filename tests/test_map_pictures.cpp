@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 #include <mrpt/img/CImage.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
-#include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/opengl/CSetOfObjects.h>
 #include <mrpt/opengl/CTexturedPlane.h>
 #include <mrpt/poses/CPose3D.h>
@@ -22,35 +21,24 @@
 #include <sstream>
 #include <string>
 
-#include "test_helpers.h"
+#include "support/scans.h"
+#include "support/test_helpers.h"
 
 using namespace mrpt_evidential;
 namespace fs = std::filesystem;
 
 namespace
 {
-/** A 180-degree scan of 181 rays at data time t, every range = r. */
-mrpt::obs::CObservation2DRangeScan wallScan(double t, double r)
-{
-	mrpt::obs::CObservation2DRangeScan scan;
-	scan.aperture = static_cast<float>(M_PI);
-	scan.maxRange = 10.0f;
-	scan.resizeScan(181);
-	for (std::size_t i = 0; i < 181; ++i)
-	{
-		scan.setScanRange(i, static_cast<float>(r));
-		scan.setScanRangeValidity(i, true);
-	}
-	scan.timestamp = mrpt::Clock::fromDouble(t);
-	return scan;
-}
+/** How these tests take scans: 181 rays over 180 degrees, maxRange 10 m. */
+const test::ScanSetup kSetup = test::ScanSetup().maxRange(10.0);
+constexpr std::size_t kRays = 181;
 
 /** A map that saw a wall 2 m ahead: free, occupied and unknown cells. */
 CEvidentialGridMap2D scannedMap()
 {
 	CEvidentialGridMap2D map(-3.0, 3.0, -3.0, 3.0, 0.1);
 	map.insertionOptions.growthMargin = 0.0;
-	map.insertObservation(wallScan(10.0, 2.0), mrpt::poses::CPose3D());
+	map.insertObservation(test::arcScan(kRays, 2.0, kSetup.at(10.0)), mrpt::poses::CPose3D());
 	return map;
 }
 
@@ -60,8 +48,8 @@ CEvidentialGridMap2D conflictingMap()
 {
 	CEvidentialGridMap2D map(-4.0, 4.0, -4.0, 4.0, 0.1);
 	map.insertionOptions.growthMargin = 0.0;
-	map.insertObservation(wallScan(10.0, 2.0), mrpt::poses::CPose3D());
-	map.insertObservation(wallScan(11.0, 3.0), mrpt::poses::CPose3D());
+	map.insertObservation(test::arcScan(kRays, 2.0, kSetup.at(10.0)), mrpt::poses::CPose3D());
+	map.insertObservation(test::arcScan(kRays, 3.0, kSetup.at(11.0)), mrpt::poses::CPose3D());
 	return map;
 }
 
@@ -93,14 +81,6 @@ ChannelOrder channelOrder()
 unsigned rowOf(const CEvidentialGridMap2D& map, int cy)
 {
 	return static_cast<unsigned>(map.getSizeY() - 1 - cy);
-}
-
-fs::path scratchDir(const std::string& name)
-{
-	const fs::path dir = fs::path(TEST_SCRATCH_DIR) / "map_pictures" / name;
-	fs::remove_all(dir);
-	fs::create_directories(dir);
-	return dir;
 }
 
 std::set<std::string> filesIn(const fs::path& dir)
@@ -273,7 +253,8 @@ TEST(MapPictures, OccupancyGridWithAnUnalignedOrigin)
 	// each of its cells holds the BetP of the cell under its centre.
 	CEvidentialGridMap2D map(-2.03, 2.97, -1.96, 3.04, 0.1);
 	map.insertionOptions.growthMargin = 0.0;
-	map.insertObservation(wallScan(1.0, 1.5), mrpt::poses::CPose3D(0.2, 0.4, 0, 0.3, 0, 0));
+	map.insertObservation(
+		test::arcScan(kRays, 1.5, kSetup.at(1.0)), mrpt::poses::CPose3D(0.2, 0.4, 0, 0.3, 0, 0));
 	mrpt::maps::COccupancyGridMap2D grid;
 	map.getAsOccupancyGrid(grid);
 	for (unsigned cy = 0; cy < grid.getSizeY(); ++cy)
@@ -285,7 +266,7 @@ TEST(MapPictures, OccupancyGridWithAnUnalignedOrigin)
 
 TEST(MapPictures, RosMapFiles)
 {
-	const fs::path dir = scratchDir("ros");
+	const fs::path dir = test::scratchDir("map_pictures", "ros");
 	const CEvidentialGridMap2D map = scannedMap();
 	map.saveAsROSMap((dir / "office").string());
 	EXPECT_EQ(filesIn(dir), (std::set<std::string>{"office.pgm", "office.yaml"}));
@@ -328,7 +309,7 @@ TEST(MapPictures, RosMapFiles)
 
 TEST(MapPictures, SavedRepresentationWritesFiveFilesAndNoTemporary)
 {
-	const fs::path dir = scratchDir("representation");
+	const fs::path dir = test::scratchDir("map_pictures", "representation");
 	const CEvidentialGridMap2D map = conflictingMap();
 	const std::string prefix = (dir / "run1").string();
 	map.saveMetricMapRepresentationToFile(prefix);
@@ -368,7 +349,7 @@ TEST(MapPictures, SavedRepresentationWritesFiveFilesAndNoTemporary)
 
 TEST(MapPictures, FailedWritesThrowAndLeaveNothing)
 {
-	const fs::path dir = scratchDir("failures");
+	const fs::path dir = test::scratchDir("map_pictures", "failures");
 	const CEvidentialGridMap2D map = scannedMap();
 	const fs::path missing = dir / "no_such_dir";
 	EXPECT_THROW(

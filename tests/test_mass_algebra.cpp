@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "test_helpers.h"
+#include "support/test_helpers.h"
 
 using namespace mrpt_evidential;
 using mrpt_evidential::test::MassGenerator;

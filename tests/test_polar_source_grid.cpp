@@ -1,15 +1,24 @@
-/* The polar SourceGrid of synthetic MRPT scans. */
+/* The polar SourceGrid of synthetic MRPT scans, and what it assumes of
+ * MRPT's scans. */
+#include <mrpt/io/CMemoryStream.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/serialization/CArchive.h>
 #include <mrpt_evidential/scan/CPolarSourceGrid.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
+#include <vector>
 
-#include "test_helpers.h"
+#include "support/scans.h"
+#include "support/test_helpers.h"
+#include "support/whole_read_archive.h"
 
 using namespace mrpt_evidential;
 using mrpt::obs::CObservation2DRangeScan;
+using mrpt::serialization::archiveFrom;
+using mrpt_evidential::test::CWholeReadArchive;
 
 namespace
 {
@@ -24,17 +33,8 @@ double beamRange(std::size_t i)
 /** 181 beams over 180 degrees; beam i returns at 2 + 0.01 i metres. */
 CObservation2DRangeScan syntheticScan(bool rightToLeft = true)
 {
-	CObservation2DRangeScan scan;
-	scan.aperture = static_cast<float>(M_PI);
-	scan.rightToLeft = rightToLeft;
-	scan.maxRange = 30.0f;
-	scan.resizeScan(181);
-	for (std::size_t i = 0; i < 181; ++i)
-	{
-		scan.setScanRange(i, static_cast<float>(beamRange(i)));
-		scan.setScanRangeValidity(i, true);
-	}
-	return scan;
+	return test::scanByIndex(
+		181, test::ScanSetup().maxRange(30.0).rightToLeft(rightToLeft), beamRange);
 }
 
 TSourceGridOptions options()
@@ -176,23 +176,23 @@ TEST(PolarSourceGrid, SparseRowsMatchTheFullRowsScanAfterScan)
 		o.sensorModel.profile = trial % 2 ? ImprecisionProfile::Gaussian
 										  : ImprecisionProfile::Box;
 		o.invalidRangesAsFree = trial % 4 == 0;
-		CObservation2DRangeScan scan;
-		scan.aperture = 0.01f;
 		const std::size_t n = 1 + static_cast<std::size_t>(unit(rng) * 30);
-		scan.resizeScan(n);
+		std::vector<float> ranges;
+		std::vector<bool> validity;
 		std::vector<double> impacts;
 		for (std::size_t i = 0; i < n; ++i)
 		{
 			const bool valid = unit(rng) > 0.2;
 			const auto r = static_cast<float>(range(rng));
-			scan.setScanRange(i, r);
-			scan.setScanRangeValidity(i, valid);
+			ranges.push_back(r);
+			validity.push_back(valid);
 			if (valid)
 				impacts.push_back(r);
 			else if (o.invalidRangesAsFree)
 				impacts.push_back(std::numeric_limits<double>::infinity());
 		}
-		grid.build(scan, o);
+		grid.build(
+			test::scanFromRanges(ranges, validity, test::ScanSetup().aperture(0.01f)), o);
 		ASSERT_EQ(grid.sectorCount(), 1u);
 		const std::vector<Mass> expected =
 			sectorMasses(o.sensorModel, impacts, kBin, grid.binCount());
@@ -209,15 +209,11 @@ TEST(PolarSourceGrid, SparseRowsMatchTheFullRowsScanAfterScan)
 
 TEST(PolarSourceGrid, EmptyAndSingleBeamScans)
 {
-	CObservation2DRangeScan scan;
 	CPolarSourceGrid grid;
-	grid.build(scan, options());
+	grid.build(test::scanFromRanges({}, {}), options());
 	EXPECT_EQ(grid.sectorCount(), 0u);
 
-	scan.resizeScan(1);
-	scan.setScanRange(0, 1.0f);
-	scan.setScanRangeValidity(0, true);
-	grid.build(scan, options());
+	grid.build(test::arcScan(1, 1.0), options());
 	ASSERT_EQ(grid.sectorCount(), 1u);
 	EXPECT_EQ(grid.sectorAngle(0), 0.0);
 	expectSingleImpactRow(grid, 0, 1.0);
@@ -243,4 +239,46 @@ TEST(PolarSourceGrid, RejectsBadOptionsAndApertures)
 	EXPECT_THROW(grid.at(181, 0), std::out_of_range);
 	grid.build(syntheticScan(), options());
 	EXPECT_THROW(grid.at(0, 200), std::out_of_range);
+}
+
+// ---------------------------------------------------------------------------
+// What the source grid assumes of MRPT's scans
+// ---------------------------------------------------------------------------
+
+TEST(BadScan, ValidityAlwaysAsLongAsTheRanges)
+{
+	// MRPT keeps the validity flags private and sizes them with the ranges
+	// in every way a scan can be made, deserialization included; reading a
+	// flag past the end throws. A shorter validity vector therefore cannot
+	// reach the map: this pins the assumption.
+	CObservation2DRangeScan scan;
+	scan.resizeScan(7);
+	EXPECT_THROW(scan.getScanRangeValidity(7), std::exception);
+	scan.resizeScanAndAssign(9, 1.0f, true);
+	const std::vector<float> ranges(11, 2.0f);
+	const std::vector<char> valid(11, 1);
+	scan.loadFromVectors(ranges.size(), ranges.data(), valid.data());
+	EXPECT_EQ(scan.getScanSize(), 11u);
+	EXPECT_NO_THROW(scan.getScanRangeValidity(10));
+
+	// A stream cut anywhere, inside the validity flags included, is an
+	// error, not a short vector. The cuts are read as evgrid reads files,
+	// whole fields or nothing: over MRPT's CMemoryStream a cut inside the ray
+	// count hands MRPT a count made of uninitialized bytes, and it allocated
+	// up to 20 GB for it (see CWholeReadArchive).
+	mrpt::io::CMemoryStream buf;
+	archiveFrom(buf) << scan;
+	const auto* p = static_cast<const std::uint8_t*>(buf.getRawBufferData());
+	const std::vector<std::uint8_t> bytes(p, p + buf.getTotalBytesCount());
+	for (std::size_t len = 0; len < bytes.size(); ++len)
+	{
+		CWholeReadArchive cut(bytes.data(), len);
+		CObservation2DRangeScan back;
+		EXPECT_THROW(cut >> back, std::exception) << "a scan cut at byte " << len << " was read";
+	}
+	CWholeReadArchive whole(bytes);
+	CObservation2DRangeScan back;
+	whole >> back;
+	EXPECT_EQ(back.getScanSize(), 11u);
+	EXPECT_NO_THROW(back.getScanRangeValidity(10));
 }

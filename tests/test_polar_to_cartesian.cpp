@@ -5,8 +5,10 @@
 
 #include <cmath>
 #include <map>
+#include <vector>
 
-#include "test_helpers.h"
+#include "support/scans.h"
+#include "support/test_helpers.h"
 
 using namespace mrpt_evidential;
 using mrpt::obs::CObservation2DRangeScan;
@@ -68,20 +70,20 @@ Mass referenceMix(const CPolarSourceGrid& polar, double lx, double ly)
 CObservation2DRangeScan randomScan(std::mt19937& rng, std::size_t beams, double aperture)
 {
 	std::uniform_real_distribution<double> u(0.0, 1.0);
-	CObservation2DRangeScan scan;
-	scan.aperture = static_cast<float>(aperture);
-	scan.rightToLeft = u(rng) < 0.8;
-	scan.resizeScan(beams);
+	const bool rightToLeft = u(rng) < 0.8;
+	std::vector<float> ranges;
+	std::vector<bool> valid;
 	double r = 1 + 4 * u(rng);
 	for (std::size_t i = 0; i < beams; ++i)
 	{
 		// Walls with jumps, and now and then no return.
 		if (u(rng) < 0.1) r = 0.5 + 7 * u(rng);
 		r = std::max(0.2, r + 0.05 * (u(rng) - 0.5));
-		scan.setScanRange(i, static_cast<float>(r));
-		scan.setScanRangeValidity(i, u(rng) > 0.05);
+		ranges.push_back(static_cast<float>(r));
+		valid.push_back(u(rng) > 0.05);
 	}
-	return scan;
+	return test::scanFromRanges(
+		ranges, valid, test::ScanSetup().aperture(aperture).rightToLeft(rightToLeft));
 }
 }  // namespace
 

@@ -6,7 +6,6 @@
  * reliability_tsan_threads test (doc/reliability.md); results must equal
  * those of one thread. */
 #include <gtest/gtest.h>
-#include <mrpt/core/Clock.h>
 #include <mrpt/img/CImage.h>
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
@@ -22,8 +21,9 @@
 #include <string>
 #include <vector>
 
-#include "map_bytes.h"
-#include "test_helpers.h"
+#include "support/map_bytes.h"
+#include "support/scans.h"
+#include "support/test_helpers.h"
 
 using namespace mrpt_evidential;
 using mrpt_evidential::test::serialize;
@@ -37,23 +37,17 @@ constexpr int kThreads = 4;
 /** A square room of half-width 3 m seen from (x, y, yaw), 270 degrees. */
 CObservation2DRangeScan roomScan(double x, double y, double yaw, double t)
 {
-	CObservation2DRangeScan scan;
-	scan.aperture = static_cast<float>(1.5 * M_PI);
-	scan.timestamp = mrpt::Clock::fromDouble(t);
-	scan.resizeScan(271);
-	for (std::size_t i = 0; i < scan.getScanSize(); ++i)
-	{
-		const double a = yaw + scan.getScanAngle(i);
+	const auto setup = test::ScanSetup().aperture(1.5 * M_PI).at(t);
+	return test::scanByAngle(271, setup, [x, y, yaw](double angle) {
+		const double a = yaw + angle;
 		const double c = std::cos(a), s = std::sin(a);
 		double r = 1e9;
 		if (c > 1e-9) r = std::min(r, (3.0 - x) / c);
 		if (c < -1e-9) r = std::min(r, (-3.0 - x) / c);
 		if (s > 1e-9) r = std::min(r, (3.0 - y) / s);
 		if (s < -1e-9) r = std::min(r, (-3.0 - y) / s);
-		scan.setScanRange(i, static_cast<float>(r));
-		scan.setScanRangeValidity(i, true);
-	}
-	return scan;
+		return r;
+	});
 }
 
 /** Everything the const methods give, to compare threads with one thread. */

@@ -1,6 +1,7 @@
 /* Shared by the fuzz targets and fuzz_seeds: reading and writing the fuzzers'
  * input layouts, the checks every map must pass, and MRPT's framing of a
- * serialized map. */
+ * serialized map. Maps to bytes, map checks and scans come from
+ * tests/support, as in the unit tests. */
 #pragma once
 
 #include <mrpt/io/CMemoryStream.h>
@@ -17,7 +18,9 @@
 #include <type_traits>
 #include <vector>
 
-#include "../map_bytes.h"
+#include "../support/map_bytes.h"
+#include "../support/maps.h"
+#include "../support/scans.h"
 
 namespace fuzz
 {
@@ -93,11 +96,8 @@ class Writer
 /** Every cell a valid mass function, within the budget. */
 inline void checkMap(const mrpt_evidential::CEvidentialGridMap2D& map)
 {
-	if (map.geometry().cellCount() > map.maxCells())
-		fail("the grid exceeds its cell budget");
-	for (std::size_t i = 0; i < map.geometry().cellCount(); ++i)
-		if (!map.storage().read(i).isValid(1e-9))
-			fail("cell " + std::to_string(i) + " holds an invalid mass");
+	const std::string defect = mrpt_evidential::test::mapDefect(map);
+	if (!defect.empty()) fail(defect);
 }
 
 /** MRPT's object header of the map: 0x80 | name length, the class name, the
@@ -117,8 +117,7 @@ inline std::vector<std::uint8_t> frame(const std::uint8_t* payload, std::size_t 
 {
 	std::vector<std::uint8_t> out = mapHeader();
 	out.insert(out.end(), payload, payload + size);
-	std::uint64_t h = 0xcbf29ce484222325ULL;
-	for (std::size_t i = 0; i < size; ++i) h = (h ^ payload[i]) * 0x100000001b3ULL;
+	const std::uint64_t h = mrpt_evidential::test::payloadChecksum(payload, size);
 	for (int i = 0; i < 8; ++i) out.push_back(static_cast<std::uint8_t>(h >> (8 * i)));
 	out.push_back(0x88);
 	return out;

@@ -5,8 +5,6 @@
  * A read may throw (std::exception); when it succeeds the map must be valid,
  * write itself back identically, take a scan and score one. Anything else,
  * or an allocation far beyond the input's size, is a finding. */
-#include <mrpt/core/Clock.h>
-#include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose3D.h>
 
 #include <exception>
@@ -64,10 +62,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 	// cut so that growth stays small.
 	const GridGeometry& g = map.geometry();
 	map.setMaxCells(std::max(g.cellCount(), std::min<std::size_t>(map.maxCells(), 1 << 20)));
-	mrpt::obs::CObservation2DRangeScan scan;
-	scan.aperture = static_cast<float>(M_PI);
-	scan.timestamp = mrpt::Clock::fromDouble(1.7e9);
-	scan.resizeScanAndAssign(91, static_cast<float>(map.insertionOptions.maxRange / 2), true);
+	const auto scan = test::arcScan(
+		91, map.insertionOptions.maxRange / 2, test::ScanSetup().at(1.7e9));
 	const mrpt::poses::CPose3D pose(
 		g.xMin + 0.5 * g.sizeX * g.resolution, g.yMin + 0.5 * g.sizeY * g.resolution,
 		0, 0, 0, 0);

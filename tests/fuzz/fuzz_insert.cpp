@@ -4,10 +4,10 @@
  * and poses may throw std::invalid_argument; anything else that escapes, an
  * invalid cell, a grid beyond its budget or a NaN likelihood is a finding. */
 #include <mrpt/core/Clock.h>
-#include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose3D.h>
 
 #include <stdexcept>
+#include <vector>
 
 #include "FuzzSupport.h"
 
@@ -49,20 +49,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
 	for (const fuzz::InsertCase::Scan& s : c.scans)
 	{
-		mrpt::obs::CObservation2DRangeScan scan;
-		scan.aperture = s.aperture;
-		scan.rightToLeft = s.rightToLeft & 1;
-		scan.sensorPose = mrpt::poses::CPose3D(
-			s.sensorPose[0], s.sensorPose[1], s.sensorPose[2], s.sensorPose[3],
-			s.sensorPose[4], s.sensorPose[5]);
-		scan.timestamp = mrpt::Clock::time_point(mrpt::Clock::duration(s.ticks));
-		scan.resizeScan(s.ranges.size());
-		for (std::size_t i = 0; i < s.ranges.size(); ++i)
-		{
-			scan.setScanRange(i, s.ranges[i]);
-			scan.setScanRangeValidity(
-				i, i / 8 < s.valid.size() && ((s.valid[i / 8] >> (i % 8)) & 1));
-		}
+		std::vector<bool> valid(s.ranges.size());
+		for (std::size_t i = 0; i < valid.size(); ++i)
+			valid[i] = i / 8 < s.valid.size() && ((s.valid[i / 8] >> (i % 8)) & 1);
+		const auto setup =
+			test::ScanSetup()
+				.aperture(s.aperture)
+				.rightToLeft(s.rightToLeft & 1)
+				.sensorPose(mrpt::poses::CPose3D(
+					s.sensorPose[0], s.sensorPose[1], s.sensorPose[2], s.sensorPose[3],
+					s.sensorPose[4], s.sensorPose[5]))
+				.at(mrpt::Clock::time_point(mrpt::Clock::duration(s.ticks)));
+		const auto scan = test::scanFromRanges(s.ranges, valid, setup);
 		const mrpt::poses::CPose3D robot(
 			s.robotPose[0], s.robotPose[1], s.robotPose[2], s.robotPose[3],
 			s.robotPose[4], s.robotPose[5]);

@@ -2,7 +2,6 @@
  * DIR/deserialize, DIR/insert and DIR/ini, from the current code, so that
  * they follow the serialization format and the input layouts. tests/fuzz/
  * corpus/ holds a copy (plus rawlogs/evgrid.ini); run_fuzzer.sh uses both. */
-#include <mrpt/core/Clock.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose3D.h>
 
@@ -25,13 +24,10 @@ void save(const fs::path& file, const std::vector<std::uint8_t>& bytes)
 			   static_cast<std::streamsize>(bytes.size()));
 }
 
+/** 37 beams over 180 degrees, all at `range`, taken at `time`. */
 mrpt::obs::CObservation2DRangeScan wall(double range, double time)
 {
-	mrpt::obs::CObservation2DRangeScan scan;
-	scan.aperture = static_cast<float>(M_PI);
-	scan.timestamp = mrpt::Clock::fromDouble(time);
-	scan.resizeScanAndAssign(37, static_cast<float>(range), true);
-	return scan;
+	return test::arcScan(37, range, test::ScanSetup().at(time));
 }
 
 /** A serialized map as fuzz_deserialize reads it: mode 0 and the payload

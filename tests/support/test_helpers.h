@@ -1,5 +1,6 @@
-/* Shared helpers of the unit tests: random masses, mass comparisons and
- * threads that start together. */
+/* Shared helpers of the unit tests: random masses, mass comparisons, threads
+ * that start together, captured stderr and scratch directories. The algebra
+ * alone: test_mass_algebra links no MRPT. */
 #pragma once
 
 #include <gtest/gtest.h>
@@ -7,19 +8,15 @@
 
 #include <atomic>
 #include <cmath>
-#include <ostream>
+#include <cstddef>
+#include <filesystem>
+#include <functional>
 #include <random>
+#include <string>
 #include <thread>
 #include <vector>
 
-namespace mrpt_evidential
-{
-inline std::ostream& operator<<(std::ostream& os, const Mass& m)
-{
-	return os << "{conflict " << m.conflict << ", free " << m.free
-			  << ", occupied " << m.occupied << ", unknown " << m.unknown << "}";
-}
-}  // namespace mrpt_evidential
+#include "mass_text.h"
 
 namespace mrpt_evidential::test
 {
@@ -81,6 +78,35 @@ void runTogether(int count, F f)
 		});
 	for (auto& thread : threads) thread.join();
 }
+
+/** Runs f and returns what it wrote to stderr. */
+inline std::string stderrOf(const std::function<void()>& f)
+{
+	::testing::internal::CaptureStderr();
+	f();
+	return ::testing::internal::GetCapturedStderr();
+}
+
+/** How many times `needle` occurs in `text`, overlaps included. */
+inline std::size_t occurrences(const std::string& text, const std::string& needle)
+{
+	std::size_t n = 0;
+	for (auto p = text.find(needle); p != std::string::npos; p = text.find(needle, p + 1))
+		++n;
+	return n;
+}
+
+#ifdef TEST_SCRATCH_DIR
+/** A fresh, empty directory for one test: `name` in the suite's own folder
+ * of the build tree's scratch space. */
+inline std::filesystem::path scratchDir(const std::string& suite, const std::string& name)
+{
+	const std::filesystem::path dir = std::filesystem::path(TEST_SCRATCH_DIR) / suite / name;
+	std::filesystem::remove_all(dir);
+	std::filesystem::create_directories(dir);
+	return dir;
+}
+#endif
 
 }  // namespace mrpt_evidential::test
 
