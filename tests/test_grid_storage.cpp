@@ -46,8 +46,12 @@ TEST(QuantizedMass, EncodedMassesStayValidAndClose)
 	QuantizedCell c;
 	encodeMass(Mass::vacuous(), c);
 	EXPECT_EQ(decodeMass(c), Mass::vacuous());
+	// Total conflict is stored one step below 1, so that 1 - m(empty) never
+	// rounds to 0 and the normal part keeps its ratios (issue 14).
 	encodeMass(Mass::degenerate(), c);
-	EXPECT_EQ(decodeMass(c), Mass::degenerate());
+	EXPECT_EQ(c.conflict, kMaxStoredConflict);
+	EXPECT_MASS_NEAR(decodeMass(c), Mass::degenerate(), 1.0 / kMassScale);
+	EXPECT_EQ(decide(decodeMass(c)), Decision::Conflict);
 	// Three masses of 1/3 round up together: the sum must not pass the scale.
 	encodeMass(Mass{1.0 / 3, 1.0 / 3, 1.0 / 3, 0.0}, c);
 	EXPECT_TRUE(isConsistent(c));

@@ -11,6 +11,7 @@
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
+#include <mrpt_evidential/grid/QuantizedMass.h>
 
 #include <cmath>
 #include <cstdint>
@@ -282,13 +283,57 @@ TEST(MapIO, EveryTruncationIsDetected)
 	EXPECT_EQ(end.report, "");
 }
 
+TEST(MapIO, VersionZeroFilesStillLoad)
+{
+	// Version 0 stored m(empty), m(F) and m(O) themselves in the cells; this
+	// version stores the conflict and the normal part (issue 14). A map with
+	// conflict, written as version 0 would have written it, reads back with
+	// the same masses within the two formats' roundings.
+	CEvidentialGridMap2D original(-2.0, 2.0, -2.0, 2.0, 0.1);
+	original.insertObservation(test::arcScan(181, 1.5, kSetup.at(1.0)), CPose3D());
+	original.insertObservation(test::arcScan(181, 1.8, kSetup.at(2.0)), CPose3D());
+	ASSERT_GT(original.countDecisions().conflict, 0u);
+
+	auto bytes = serialize(original);
+	const std::size_t versionPos = 1 + (bytes[0] & 0x7F);
+	bytes[versionPos] = 0;
+	const std::size_t cells = original.geometry().cellCount();
+	const std::size_t first = bytes.size() - 9 - 8 * cells;  // checksum, end marker
+	const auto put = [&](std::size_t at, double v) {
+		putLE(bytes, at, quantizeMass(v), 2);
+	};
+	for (std::size_t i = 0; i < cells; ++i)
+	{
+		// Version 0's cell: the masses rounded, the stamp as it was. These
+		// masses round to values that never pass the scale together.
+		const Mass m = decodeMass(original.storage().cells()[i]);
+		put(first + 8 * i, m.conflict);
+		put(first + 8 * i + 2, m.free);
+		put(first + 8 * i + 4, m.occupied);
+	}
+	reseal(bytes);
+	CEvidentialGridMap2D back;
+	deserialize(bytes, back);
+	ASSERT_EQ(back.geometry().cellCount(), cells);
+	for (std::size_t i = 0; i < cells; ++i)
+		ASSERT_MASS_NEAR_AT(
+			back.storage().read(i), original.storage().read(i), 2.0 / kMassScale, i, 0);
+
+	// A version-0 cell whose masses pass 1 together is refused, as before.
+	putLE(bytes, first, 40000, 2);
+	putLE(bytes, first + 2, 40000, 2);
+	reseal(bytes);
+	CEvidentialGridMap2D refused;
+	EXPECT_ANY_THROW(deserialize(bytes, refused));
+}
+
 TEST(MapIO, UnknownVersionIsRejected)
 {
 	auto bytes = serialize(makeMap(0.3));
 	// MRPT's object header: 0x80 | name length, the class name, the version.
 	const std::size_t versionPos = 1 + (bytes[0] & 0x7F);
-	ASSERT_EQ(bytes[versionPos], 0);
-	for (const std::uint8_t v : {1, 2, 0x7F, 0xFF})
+	ASSERT_EQ(bytes[versionPos], 1);
+	for (const std::uint8_t v : {2, 3, 0x7F, 0xFF})
 	{
 		bytes[versionPos] = v;
 		CEvidentialGridMap2D target;

@@ -1,7 +1,7 @@
 /* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
  * CEvidentialGridMap2D: serialization (CSerializable).
  *
- * Layout of version 0, after MRPT's object header (class name, version byte),
+ * Layout of version 1, after MRPT's object header (class name, version byte),
  * every number little-endian:
  *   geometry     f64 xMin, f64 yMin, f64 resolution, i32 sizeX, i32 sizeY
  *   budget       u64 maxCells
@@ -17,7 +17,11 @@
  *   stamps       u32 count N, N x f64 insertion times
  *   storage      u64 insertionCount, f64 decayRate (the storage's)
  *   cells        sizeX * sizeY cells, row by row from (0, 0), each
- *                u16 conflict, u16 free, u16 occupied, u16 stamp
+ *                u16 conflict, u16 free, u16 occupied, u16 stamp: the
+ *                conflict and the normal part's free and occupied masses
+ *                (QuantizedCell)
+ * Version 0 had the same layout with m(F) and m(O) themselves in the cells
+ * instead of the normal part's; it is read and converted.
  *   checksum     u64 FNV-1a (64 bit) of every byte above, header excluded
  * Enums are stored as their integer values; booleans as 0 or 1.
  * Reading refuses a budget above 10 x kDefaultMaxCells and a grid of more
@@ -138,7 +142,7 @@ std::uint16_t getU16(const std::uint8_t* p)
 }
 }  // namespace
 
-uint8_t CEvidentialGridMap2D::serializeGetVersion() const { return 0; }
+uint8_t CEvidentialGridMap2D::serializeGetVersion() const { return 1; }
 
 void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 {
@@ -197,7 +201,7 @@ void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 
 void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 {
-	if (version != 0) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+	if (version > 1) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
 
 	// Everything goes into locals: the map changes only once all is read,
 	// checked and validated.
@@ -272,6 +276,12 @@ void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 			c.free = getU16(p + 2);
 			c.occupied = getU16(p + 4);
 			c.stamp = getU16(p + 6);
+			if (version == 0)
+			{
+				if (std::uint32_t(c.conflict) + c.free + c.occupied > std::uint32_t(kMassScale))
+					corrupted("a cell of version 0 holds masses above 1");
+				c = fromVersion0(c);
+			}
 		}
 	}
 

@@ -8,6 +8,7 @@
 #include <mrpt_evidential/grid/GridGeometry.h>
 #include <mrpt_evidential/grid/QuantizedMass.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -97,18 +98,26 @@ class EvidentialGridStorage
 		write(idx, handleConflict(combine(rule, read(idx), observed), handling));
 	}
 	/** The conjunctive rule keeping the conflict (the default), computed on
-	 * the stored values: fuse() without its generality. */
+	 * the stored values: fuse() without its generality. In the stored form
+	 * the conjunctive rule is Dempster's rule on the normal parts, and
+	 * 1 - K multiplies by 1 - (the conflict of that fusion). */
 	void fuseConjunctive(std::size_t idx, const Mass& observed)
 	{
 		QuantizedCell& c = m_cells[idx];
-		const double d = decayFactor(c.stamp);
-		const double e = c.conflict * d, f = c.free * d, o = c.occupied * d;
-		const double u = kMassScale - e - f - o;
-		const double of = observed.free, oo = observed.occupied,
-					 ou = observed.unknown;
+		double f, o, keep;
+		decayedNormal(c, f, o, keep);
+		const double u = kMassScale - f - o;
+		// The observation's normal part and conflict.
+		const double observedKeep = 1.0 - observed.conflict;
+		const double toNormal = observedKeep > 0.0 ? 1.0 / observedKeep : 0.0;
+		const double of = observed.free * toNormal,
+					 oo = observed.occupied * toNormal, ou = 1.0 - of - oo;
+		const double newConflict = (f * oo + o * of) / kMassScale;
+		// At total conflict both products are 0 and n becomes vacuous.
+		const double normalize = 1.0 / std::max(1.0 - newConflict, 1e-300);
 		encodeScaled(
-			c, e + observed.conflict * (kMassScale - e) + f * oo + o * of,
-			f * (of + ou) + u * of, o * (oo + ou) + u * oo);
+			c, kMassScale * (1.0 - keep * observedKeep * (1.0 - newConflict)),
+			(f * (of + ou) + u * of) * normalize, (o * (oo + ou) + u * oo) * normalize);
 		c.stamp = m_currentStamp;
 	}
 	/** fuseConjunctive() with the simple free mass m(F) = w, the mass of the
@@ -117,10 +126,18 @@ class EvidentialGridStorage
 	void fuseSimpleFree(std::size_t idx, float w)
 	{
 		QuantizedCell& c = m_cells[idx];
-		const auto d = static_cast<float>(decayFactor(c.stamp));
-		const float e = c.conflict * d, f = c.free * d, o = c.occupied * d;
-		const float u = static_cast<float>(kMassScale) - e - f - o;
-		encodeScaled(c, e + o * w, f + u * w, o - o * w);
+		const float d = static_cast<float>(decayFactor(c.stamp));
+		const float scale = static_cast<float>(kMassScale);
+		const float k = c.conflict * (d / scale);
+		// Decay moves the share 1 - d of each mass to Omega: the normal part
+		// keeps s = d (1 - K) / (1 - d K) of its evidence.
+		const float s = (d - d * c.conflict / scale) / (1.0f - k);
+		const float f = c.free * s, o = c.occupied * s, u = scale - f - o;
+		const float newConflict = o * w / scale;
+		const float normalize = 1.0f / std::max(1.0f - newConflict, 1e-30f);
+		encodeScaled(
+			c, scale - (scale - k * scale) * (1.0f - newConflict),
+			(f + u * w) * normalize, (o - o * w) * normalize);
 		c.stamp = m_currentStamp;
 	}
 	/** @} */
@@ -150,6 +167,18 @@ class EvidentialGridStorage
 		double decayRate);
 
    private:
+	/** The normal part of a cell decayed to latestTime(), in stored units
+	 * (n(F), n(O)), and its 1 - K. Decay discounts the whole mass, so the
+	 * conflict shrinks to d K and the normal part keeps the share
+	 * s = d (1 - K) / (1 - d K) of its evidence. */
+	void decayedNormal(const QuantizedCell& c, double& f, double& o, double& keep) const
+	{
+		const double d = decayFactor(c.stamp), k = c.conflict / kMassScale;
+		keep = 1.0 - d * k;
+		const double s = d * (1.0 - k) / keep;
+		f = c.free * s;
+		o = c.occupied * s;
+	}
 	/** exp(-decayRate (latestTime - time of stamp)). */
 	double decayFactor(std::uint16_t stamp) const
 	{
