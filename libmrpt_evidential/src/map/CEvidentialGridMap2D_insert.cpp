@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <type_traits>
 
 using namespace mrpt_evidential;
 
@@ -79,15 +80,23 @@ bool CEvidentialGridMap2D::insertScan(
 	const FusionRule rule = insertionOptions.fusionRule;
 	const ConflictHandling handling = insertionOptions.conflictHandling;
 	const Mass& uniform = transform.uniformMass();
-	if (rule == FusionRule::Conjunctive && handling == ConflictHandling::Keep)
+	const auto conjunctive = [&](auto decays) {
 		transform.forEachInformedCell(
 			geometry(),
 			[&](std::size_t idx, const Mass& observed) {
 				m_grid.fuseConjunctive(idx, observed);
 			},
 			[&, w = static_cast<float>(uniform.free)](std::size_t idx) {
-				m_grid.fuseSimpleFree(idx, w);
+				m_grid.fuseSimpleFree<decltype(decays)::value>(idx, w);
 			});
+	};
+	if (rule == FusionRule::Conjunctive && handling == ConflictHandling::Keep)
+	{
+		if (m_grid.decayRate() > 0.0)
+			conjunctive(std::true_type());
+		else
+			conjunctive(std::false_type());
+	}
 	else
 		transform.forEachInformedCell(
 			geometry(),

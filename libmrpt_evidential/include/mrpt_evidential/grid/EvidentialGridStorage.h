@@ -122,22 +122,32 @@ class EvidentialGridStorage
 	}
 	/** fuseConjunctive() with the simple free mass m(F) = w, the mass of the
 	 * bulk of a scan's cells, in single precision (the compiler runs it on
-	 * four cells at once): a float holds a stored value to 1/256 of a step. */
+	 * four cells at once): a float holds a stored value to 1/256 of a step.
+	 * `Decays` false skips the decay, for grids whose decay rate is 0. */
+	template <bool Decays>
 	void fuseSimpleFree(std::size_t idx, float w)
 	{
 		QuantizedCell& c = m_cells[idx];
-		const float d = static_cast<float>(decayFactor(c.stamp));
 		const float scale = static_cast<float>(kMassScale);
-		const float k = c.conflict * (d / scale);
-		// Decay moves the share 1 - d of each mass to Omega: the normal part
-		// keeps s = d (1 - K) / (1 - d K) of its evidence.
-		const float s = (d - d * c.conflict / scale) / (1.0f - k);
-		const float f = c.free * s, o = c.occupied * s, u = scale - f - o;
+		float f = c.free, o = c.occupied, keep = 1.0f - c.conflict / scale;
+		if constexpr (Decays)
+		{
+			// Decay moves the share 1 - d of each mass to Omega: the conflict
+			// becomes d K and the normal part keeps s = d (1 - K) / (1 - d K).
+			const auto d = static_cast<float>(decayFactor(c.stamp));
+			const float decayedKeep = 1.0f - d * (1.0f - keep);
+			const float s = d * keep / decayedKeep;
+			f *= s;
+			o *= s;
+			keep = decayedKeep;
+		}
+		const float u = scale - f - o;
 		const float newConflict = o * w / scale;
+		// At total conflict both products are 0 and n becomes vacuous.
 		const float normalize = 1.0f / std::max(1.0f - newConflict, 1e-30f);
 		encodeScaled(
-			c, scale - (scale - k * scale) * (1.0f - newConflict),
-			(f + u * w) * normalize, (o - o * w) * normalize);
+			c, scale * (1.0f - keep * (1.0f - newConflict)), (f + u * w) * normalize,
+			(o - o * w) * normalize);
 		c.stamp = m_currentStamp;
 	}
 	/** @} */
@@ -179,10 +189,12 @@ class EvidentialGridStorage
 		f = c.free * s;
 		o = c.occupied * s;
 	}
-	/** exp(-decayRate (latestTime - time of stamp)). */
+	/** exp(-decayRate (latestTime - time of stamp)); exactly 1 without
+	 * decay (every gain is then exp(0)). No branch, so that the insertion
+	 * kernels vectorize. */
 	double decayFactor(std::uint16_t stamp) const
 	{
-		return m_decayRate == 0.0 ? 1.0 : m_presentGain * m_stampGain[stamp];
+		return m_presentGain * m_stampGain[stamp];
 	}
 	/** Decays every cell to time `to` (>= every stamp's time) and makes it
 	 * the only stamp. */

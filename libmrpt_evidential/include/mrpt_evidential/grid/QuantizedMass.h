@@ -63,8 +63,9 @@ inline void encodeMass(const Mass& m, QuantizedCell& c) noexcept
 	std::uint32_t f = 0, o = 0;
 	if (rest > 0.0)
 	{
-		f = quantizeMass(m.free / rest);
-		o = quantizeMass(m.occupied / rest);
+		const double toNormal = 1.0 / rest;
+		f = quantizeMass(m.free * toNormal);
+		o = quantizeMass(m.occupied * toNormal);
 		const std::uint32_t limit = static_cast<std::uint32_t>(kMassScale);
 		if (f + o > limit) (f >= o ? f : o) -= f + o - limit;
 	}
