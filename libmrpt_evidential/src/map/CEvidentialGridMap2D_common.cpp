@@ -308,11 +308,7 @@ void CEvidentialGridMap2D::TInsertionOptions::loadFromConfigFile(
 	detail::readEnum(source, section, "conflictHandling", o.conflictHandling);
 	detail::readDouble(source, section, "growthMargin", o.growthMargin);
 	// The value in the message is the text of the file, as the user wrote it.
-	if (const auto bad = o.firstInvalid())
-		detail::throwBadValue(
-			section, bad->key,
-			detail::valueText(source, section, bad->key, bad->value),
-			"must be " + bad->rule);
+	detail::throwIfInvalid(source, section, o.firstInvalid());
 	*this = o;
 }
 

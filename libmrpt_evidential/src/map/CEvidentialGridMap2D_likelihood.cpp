@@ -178,11 +178,7 @@ void CEvidentialGridMap2D::TLikelihoodOptions::loadFromConfigFile(
 	detail::readDouble(source, section, "maxRange", o.maxRange);
 	detail::readCount(source, section, "decimation", o.decimation);
 	detail::readBool(source, section, "unknownAsNeutral", o.unknownAsNeutral);
-	if (const auto bad = o.firstInvalid())
-		detail::throwBadValue(
-			section, bad->key,
-			detail::valueText(source, section, bad->key, bad->value),
-			"must be " + bad->rule);
+	detail::throwIfInvalid(source, section, o.firstInvalid());
 	*this = o;
 }
 

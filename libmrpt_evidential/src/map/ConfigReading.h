@@ -13,11 +13,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <optional>
 #include <ostream>
 #include <type_traits>
 #include <stdexcept>
 #include <string>
 
+#include <mrpt_evidential/TInvalidOption.h>
 #include <mrpt_evidential/support/NumberText.h>
 
 namespace mrpt_evidential::detail
@@ -46,6 +48,19 @@ inline std::string valueText(
 {
 	const std::string word = readWord(source, section, key);
 	return word.empty() ? shortestText(value) : word;
+}
+
+/** Reports an options struct's first invalid value, if any, as the file
+ * gives it: "[section] key = 'text': must be rule".
+ * \throws std::invalid_argument when `bad` holds a value. */
+inline void throwIfInvalid(
+	const mrpt::config::CConfigFileBase& source, const std::string& section,
+	const std::optional<TInvalidOption>& bad)
+{
+	if (bad)
+		throwBadValue(
+			section, bad->key, valueText(source, section, bad->key, bad->value),
+			"must be " + bad->rule);
 }
 
 /** Reads a number into `value` when the key is present.
