@@ -152,16 +152,6 @@ class EvidentialGridStorage
 	}
 	/** @} */
 
-	/** A stored mass discounted by a decay factor. */
-	static Mass decayed(const QuantizedCell& c, double factor)
-	{
-		Mass m = decodeMass(c);
-		if (factor >= 1.0) return m;
-		return {
-			m.conflict * factor, m.free * factor, m.occupied * factor,
-			m.unknown * factor + (1.0 - factor)};
-	}
-
 	/** The stored cells and stamp times, read-only (serialization, tests). */
 	const std::vector<QuantizedCell>& cells() const { return m_cells; }
 	const std::vector<double>& stampTimes() const { return m_stampTimes; }
@@ -177,6 +167,16 @@ class EvidentialGridStorage
 		double decayRate);
 
    private:
+	/** A stored mass discounted by a decay factor. */
+	static Mass decayed(const QuantizedCell& c, double factor)
+	{
+		Mass m = decodeMass(c);
+		if (factor >= 1.0) return m;
+		return {
+			m.conflict * factor, m.free * factor, m.occupied * factor,
+			m.unknown * factor + (1.0 - factor)};
+	}
+
 	/** The normal part of a cell decayed to latestTime(), in stored units
 	 * (n(F), n(O)), and its 1 - K. Decay discounts the whole mass, so the
 	 * conflict shrinks to d K and the normal part keeps the share
