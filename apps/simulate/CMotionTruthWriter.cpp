@@ -78,7 +78,7 @@ void CMotionTruthWriter::cover(
 {
 	for (const TShape& shape : shapes)
 		forEachCell(shape, m_grid, ECoverage::Overlap, [&](int cx, int cy) {
-			const std::size_t i = static_cast<std::size_t>(cx + m_grid.sizeX * cy);
+			const auto i = static_cast<std::size_t>(cx + m_grid.sizeX * cy);
 			if (!m_static[i]) cells[i] = 1;
 		});
 }

@@ -39,7 +39,8 @@ class CMotionTruthWriter
 
    private:
 	/** Marks in `cells` what the shapes cover, static cells left out. */
-	void cover(const std::vector<TShape>& shapes, std::vector<uint8_t>& cells) const;
+	void cover(
+		const std::vector<TShape>& shapes, std::vector<uint8_t>& cells) const;
 	/** Moves the moving things to sample n, at n * m_samplePeriod. */
 	void sample(long n);
 	void write(const std::string& text);

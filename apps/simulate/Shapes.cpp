@@ -25,8 +25,11 @@ void cellSpan(
 	}
 	else
 	{
-		first = static_cast<int>(std::floor((lo - origin) / res + kBorderSlack));
-		last = static_cast<int>(std::ceil((hi - origin) / res - kBorderSlack)) - 1;
+		first = static_cast<int>(
+			std::floor((lo - origin) / res + kBorderSlack));
+		last = static_cast<int>(
+				   std::ceil((hi - origin) / res - kBorderSlack)) -
+			1;
 	}
 	first = std::max(0, first);
 	last = std::min(size - 1, last);

@@ -58,7 +58,7 @@ void printHelp(const char* program)
 		"Simulates a robot driving loops in a room that changes, scanned by\n"
 		"MRPT's laser simulator, and writes:\n"
 		"  OUTPUT_PREFIX.rawlog     actions and sensory frames (gzip): one\n"
-		"                           odometry increment and one 2-D scan a step\n"
+		"                           odometry increment and one scan a step\n"
 		"  OUTPUT_PREFIX.gt.txt     the robot's true pose at each scan, as\n"
 		"                           time x y phi (Unix s, metres, radians)\n"
 		"  OUTPUT_PREFIX.slam.txt   the same with a SLAM-like error, slowly\n"
@@ -67,10 +67,11 @@ void printHelp(const char* program)
 		"  OUTPUT_PREFIX.motion.gz  what moves, cell by cell at each scan\n"
 		"\n"
 		"The room (x in [-5, 5], y in [-4, 4] m) has a door in its east wall\n"
-		"to a corridor. The robot drives counter-clockwise around an ellipse,\n"
-		"one loop every %g s. The scanner: %zu rays over 180 degrees at %g Hz,\n"
-		"range noise %g m, range %g m. Odometry has random errors and\n"
-		"over-estimates rotations by 2 %%. Scenes (times from the first scan):\n",
+		"to a corridor. The robot drives counter-clockwise around an\n"
+		"ellipse, one loop every %g s. The scanner: %zu rays over 180\n"
+		"degrees at %g Hz, range noise %g m, range %g m. Odometry has random\n"
+		"errors and over-estimates rotations by 2 %%. Scenes (times from the\n"
+		"first scan):\n",
 		program, 100 * sim::CSlamError::kMaxShift,
 		sim::CSlamError::kMaxTurn * 180 / M_PI, sim::CRoomScene::kLapPeriod,
 		kRays, kRate, static_cast<double>(kRangeNoise),
@@ -78,8 +79,9 @@ void printHelp(const char* program)
 	for (const sim::TSceneEntry& scene : sim::sceneCatalog())
 	{
 		std::string summary = scene.summary;
-		for (std::size_t i = 0; (i = summary.find('\n', i)) != std::string::npos;
-			 i += 5)
+		// Indent the summary's lines under the name.
+		for (std::size_t i = 0;
+			 (i = summary.find('\n', i)) != std::string::npos; i += 5)
 			summary.replace(i, 1, "\n    ");
 		std::printf("  %s\n    %s\n", scene.name, summary.c_str());
 	}
@@ -107,7 +109,8 @@ void printHelp(const char* program)
 		"\n"
 		"Options:\n"
 		"  --scene NAME  the scene (default room_door_box)\n"
-		"  --seed N      seed of the noise (default 1): equal seeds, equal files\n"
+		"  --seed N      seed of the noise (default 1): equal seeds, equal\n"
+		"                files\n"
 		"  --laps N      number of loops, >= 1 (default 2)\n"
 		"  --help        this text\n");
 }
@@ -205,7 +208,8 @@ mrpt::poses::CPose2D noisyOdometry(
 class CPoseWriter
 {
    public:
-	explicit CPoseWriter(std::string path) : m_path(std::move(path)), m_file(m_path)
+	explicit CPoseWriter(std::string path)
+		: m_path(std::move(path)), m_file(m_path)
 	{
 		if (!m_file) throw std::runtime_error("cannot write " + m_path);
 		m_file << "% time x y phi\n";
