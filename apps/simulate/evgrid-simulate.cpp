@@ -13,12 +13,17 @@
 #include <cstdio>
 #include <exception>
 #include <fstream>
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
-#include "RoomScenario.h"
+#include "CMotionTruthWriter.h"
+#include "CRoomScene.h"
+#include "CSlamError.h"
+#include "SceneCatalog.h"
 
-using mrpt_evidential::simulate::RoomScenario;
+namespace sim = mrpt_evidential::simulate;
 
 namespace
 {
@@ -40,6 +45,7 @@ constexpr double kOdoRotationBias = 1.02, kOdoRotationStd = 0.2 * M_PI / 180;
 struct TOptions
 {
 	std::string prefix;
+	std::string scene = "room_door_box";
 	unsigned int seed = 1;
 	unsigned int laps = 2;
 };
@@ -47,31 +53,66 @@ struct TOptions
 void printHelp(const char* program)
 {
 	std::printf(
-		"Usage: %s [--seed N] [--laps N] OUTPUT_PREFIX\n"
+		"Usage: %s [--scene NAME] [--seed N] [--laps N] OUTPUT_PREFIX\n"
 		"\n"
 		"Simulates a robot driving loops in a room that changes, scanned by\n"
 		"MRPT's laser simulator, and writes:\n"
-		"  OUTPUT_PREFIX.rawlog  actions and sensory frames (gzip): one\n"
-		"                        odometry increment and one 2-D scan a step\n"
-		"  OUTPUT_PREFIX.gt.txt  the robot's true pose at each scan, as\n"
-		"                        time x y phi (Unix s, metres, radians)\n"
+		"  OUTPUT_PREFIX.rawlog     actions and sensory frames (gzip): one\n"
+		"                           odometry increment and one scan a step\n"
+		"  OUTPUT_PREFIX.gt.txt     the robot's true pose at each scan, as\n"
+		"                           time x y phi (Unix s, metres, radians)\n"
+		"  OUTPUT_PREFIX.slam.txt   the same with a SLAM-like error, slowly\n"
+		"                           varying within %g cm and %g degree (for\n"
+		"                           evgrid build -p)\n"
+		"  OUTPUT_PREFIX.motion.gz  what moves, cell by cell at each scan\n"
 		"\n"
 		"The room (x in [-5, 5], y in [-4, 4] m) has a door in its east wall\n"
-		"that opens at t = %g s and a 0.5 m box pushed from (%g, %g) to\n"
-		"(%g, %g) between t = %g and %g s. The robot drives counter-clockwise\n"
-		"around an ellipse, one loop every %g s. The scanner: %zu rays over\n"
-		"180 degrees at %g Hz, range noise %g m, range %g m. Odometry has\n"
-		"random errors and over-estimates rotations by 2 %%.\n"
+		"to a corridor. The robot drives counter-clockwise around an\n"
+		"ellipse, one loop every %g s. The scanner: %zu rays over 180\n"
+		"degrees at %g Hz, range noise %g m, range %g m. Odometry has random\n"
+		"errors and over-estimates rotations by 2 %%. Scenes (times from the\n"
+		"first scan):\n",
+		program, 100 * sim::CSlamError::kMaxShift,
+		sim::CSlamError::kMaxTurn * 180 / M_PI, sim::CRoomScene::kLapPeriod,
+		kRays, kRate, static_cast<double>(kRangeNoise),
+		static_cast<double>(kMaxRange));
+	for (const sim::TSceneEntry& scene : sim::sceneCatalog())
+	{
+		std::string summary = scene.summary;
+		// Indent the summary's lines under the name.
+		for (std::size_t i = 0;
+			 (i = summary.find('\n', i)) != std::string::npos; i += 5)
+			summary.replace(i, 1, "\n    ");
+		std::printf("  %s\n    %s\n", scene.name, summary.c_str());
+	}
+	std::printf(
+		"\n"
+		"OUTPUT_PREFIX.motion.gz is gzip-compressed text: a header\n"
+		"  evgrid-simulate motion 1\n"
+		"  scene NAME\n"
+		"  start T0         Unix time of scan 0; times below are s from it\n"
+		"  grid X0 Y0 RES NX NY\n"
+		"                   cell (cx, cy) spans x in [X0 + cx RES,\n"
+		"                   X0 + (cx + 1) RES), y likewise; index cx + NX cy\n"
+		"  scans N\n"
+		"  sample DT        moving things are sampled every DT s\n"
+		"  static C ITEMS   cells of walls and furniture\n"
+		"then for each scan k = 0 .. N - 1\n"
+		"  scan k T         the scan's time\n"
+		"  occupied C ITEMS cells a moving thing covers at T\n"
+		"  left C ITEMS:TL  cells moving things stopped covering after scan\n"
+		"                   k - 1, each at time TL (<= T)\n"
+		"C counts the cells; an ITEM is a cell index I or a run I-J of them.\n"
+		"A cell counts when a thing covers part of it; static cells are never\n"
+		"listed as moving; all cells are listed, seen by the scanner or not.\n"
+		"A cell stays left (at its latest TL) until listed occupied again.\n"
 		"\n"
 		"Options:\n"
-		"  --seed N  seed of the noise (default 1): equal seeds, equal files\n"
-		"  --laps N  number of loops, >= 1 (default 2)\n"
-		"  --help    this text\n",
-		program, RoomScenario::kDoorOpensAt, RoomScenario::kBoxStartX,
-		RoomScenario::kBoxStartY, RoomScenario::kBoxEndX,
-		RoomScenario::kBoxEndY, RoomScenario::kBoxMoveStart,
-		RoomScenario::kBoxMoveEnd, RoomScenario::kLapPeriod, kRays, kRate,
-		static_cast<double>(kRangeNoise), static_cast<double>(kMaxRange));
+		"  --scene NAME  the scene (default room_door_box)\n"
+		"  --seed N      seed of the noise (default 1): equal seeds, equal\n"
+		"                files\n"
+		"  --laps N      number of loops, >= 1 (default 2)\n"
+		"  --help        this text\n");
 }
 
 /** A whole decimal number in [min, 2^32), or false. */
@@ -99,7 +140,21 @@ int parseCommandLine(int argc, char** argv, TOptions& opts)
 			printHelp(argv[0]);
 			return 0;
 		}
-		if (arg == "--seed" || arg == "--laps")
+		if (arg == "--scene")
+		{
+			if (i + 1 >= argc || !sim::findScene(argv[i + 1]))
+			{
+				std::string names;
+				for (const sim::TSceneEntry& scene : sim::sceneCatalog())
+					names += std::string(" ") + scene.name;
+				std::fprintf(
+					stderr, "%s: --scene needs one of:%s\n", argv[0],
+					names.c_str());
+				return 2;
+			}
+			opts.scene = argv[++i];
+		}
+		else if (arg == "--seed" || arg == "--laps")
 		{
 			const bool seed = arg == "--seed";
 			if (i + 1 >= argc ||
@@ -149,6 +204,35 @@ mrpt::poses::CPose2D noisyOdometry(
 			kOdoRotationStd * rng.drawGaussian1D_normalized()};
 }
 
+/** A pose file of lines "time x y phi", as evgrid build -p reads. */
+class CPoseWriter
+{
+   public:
+	explicit CPoseWriter(std::string path)
+		: m_path(std::move(path)), m_file(m_path)
+	{
+		if (!m_file) throw std::runtime_error("cannot write " + m_path);
+		m_file << "% time x y phi\n";
+	}
+	void write(double time, const mrpt::poses::CPose2D& pose)
+	{
+		char line[128];
+		std::snprintf(
+			line, sizeof(line), "%.3f %.6f %.6f %.6f\n", time, pose.x(),
+			pose.y(), pose.phi());
+		m_file << line;
+	}
+	void close()
+	{
+		m_file.close();
+		if (!m_file) throw std::runtime_error("cannot write " + m_path);
+	}
+
+   private:
+	std::string m_path;
+	std::ofstream m_file;
+};
+
 void simulate(const TOptions& opts)
 {
 	// The laser simulator draws its noise from MRPT's global generator: seed
@@ -156,26 +240,28 @@ void simulate(const TOptions& opts)
 	auto& rng = mrpt::random::getRandomGenerator();
 	rng.randomize(opts.seed);
 
-	const std::string rawlogFile = opts.prefix + ".rawlog",
-					  truthFile = opts.prefix + ".gt.txt";
+	const std::string rawlogFile = opts.prefix + ".rawlog";
 	mrpt::io::CFileGZOutputStream rawlogStream;
 	if (std::string error; !rawlogStream.open(rawlogFile, 9, error))
 		throw std::runtime_error("cannot write " + rawlogFile + ": " + error);
 	auto rawlog = mrpt::serialization::archiveFrom(rawlogStream);
-	std::ofstream truth(truthFile);
-	if (!truth) throw std::runtime_error("cannot write " + truthFile);
-	truth << "% time x y phi\n";
+	CPoseWriter truth(opts.prefix + ".gt.txt"), slam(opts.prefix + ".slam.txt");
+	sim::CSlamError slamError(opts.seed);
 
-	RoomScenario scenario;
-	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions motionModel;
+	const std::unique_ptr<sim::CScene> scene =
+		sim::findScene(opts.scene)->make();
 	const auto steps = static_cast<std::size_t>(
-		std::lround(opts.laps * RoomScenario::kLapPeriod * kRate));
-	mrpt::poses::CPose2D previousPose = RoomScenario::robotPoseAt(0.0);
+		std::lround(opts.laps * scene->lapPeriod() * kRate));
+	sim::CMotionTruthWriter motion(
+		opts.prefix + ".motion.gz", *scene, opts.scene, kStartTime,
+		1.0 / kRate, steps);
+	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions motionModel;
+	mrpt::poses::CPose2D previousPose = scene->robotPoseAt(0.0);
 	for (std::size_t k = 0; k < steps; ++k)
 	{
 		const double t = static_cast<double>(k) / kRate;
 		const auto stamp = mrpt::Clock::fromDouble(kStartTime + t);
-		const mrpt::poses::CPose2D pose = RoomScenario::robotPoseAt(t);
+		const mrpt::poses::CPose2D pose = scene->robotPoseAt(t);
 
 		// The increment since the previous scan, in the robot's frame (zero
 		// before the first scan), as the odometry measured it.
@@ -195,25 +281,25 @@ void simulate(const TOptions& opts)
 		scan->maxRange = kMaxRange;
 		scan->stdError = kRangeNoise;
 		scan->sensorPose = mrpt::poses::CPose3D(0.20, 0, 0.30, 0, 0, 0);
-		scenario.worldAt(t).laserScanSimulator(
+		scene->worldAt(t).laserScanSimulator(
 			*scan, pose, 0.6f, kRays, kRangeNoise);
 		mrpt::obs::CSensoryFrame frame;
 		frame.insert(scan);
 
 		rawlog << actions << frame;
-		char line[128];
-		std::snprintf(
-			line, sizeof(line), "%.3f %.6f %.6f %.6f\n", kStartTime + t,
-			pose.x(), pose.y(), pose.phi());
-		truth << line;
+		truth.write(kStartTime + t, pose);
+		slam.write(kStartTime + t, slamError.estimate(pose));
+		motion.writeScan(k);
 	}
 	rawlogStream.close();
 	truth.close();
-	if (!truth) throw std::runtime_error("cannot write " + truthFile);
+	slam.close();
+	motion.close();
 	std::printf(
-		"evgrid-simulate: %zu scans, %g s: %s, %s\n", steps,
-		static_cast<double>(steps) / kRate, rawlogFile.c_str(),
-		truthFile.c_str());
+		"evgrid-simulate: scene %s, %zu scans, %g s: %s.{rawlog,gt.txt,"
+		"slam.txt,motion.gz}\n",
+		opts.scene.c_str(), steps, static_cast<double>(steps) / kRate,
+		opts.prefix.c_str());
 }
 }  // namespace
 
