@@ -1,6 +1,7 @@
 # Installs the build tree into a scratch prefix, then configures, builds and
-# runs the consumer project against it: its own program, the README's example
-# and a program of the algebra alone. Fails on the first step that fails.
+# runs every installed program from there and the consumer project against
+# it: its own program, the README's example and a program of the algebra
+# alone. Fails on the first step that fails.
 file(REMOVE_RECURSE ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
 function(step)
@@ -10,6 +11,14 @@ function(step)
   endif()
 endfunction()
 step(${CMAKE_COMMAND} --install ${PROJECT_BINARY_DIR} --prefix ${prefix})
+
+# Every installed program runs from the prefix as it is, without the build
+# tree or LD_LIBRARY_PATH.
+string(REPLACE "," ";" programs "${INSTALLED_PROGRAMS}")
+foreach(program IN LISTS programs)
+  step(${CMAKE_COMMAND} -E env --unset=LD_LIBRARY_PATH
+    ${prefix}/bin/${program} --help)
+endforeach()
 
 # The README's C++ example, exactly as written there.
 file(READ ${README} readme)
