@@ -22,6 +22,7 @@
 #include "CScopedTimer.h"
 #include "CommandLine.h"
 #include "Commands.h"
+#include "InputOptions.h"
 #include "MapFiles.h"
 #include "MapOutputs.h"
 
@@ -106,63 +107,21 @@ std::optional<int> parseOptions(
 		"(NNNNNN = scans inserted so far). The frames/ folder of an earlier "
 		"run is replaced as a whole.",
 		false, 0, "N", cmd);
-	TCLAP::ValueArg<double> argTolerance(
-		"", "pose-tolerance",
-		"For pose files by time stamp: a scan farther than this from the "
-		"nearest pose of the file gets no pose and is skipped (counted in the "
-		"summary). Seconds, default 0.1.",
-		false, 0.1, "SECONDS", cmd);
-	TCLAP::ValueArg<std::string> argPosesFormat(
-		"", "poses-format",
-		"How --poses is keyed: 'time' (lines 'time x y phi', e.g. MRPT ground "
-		"truth), 'step' (lines 'step x y phi', icp-slam's "
-		"log_estimated_path.txt) or 'auto' (step when the first column counts "
-		"up from 0 by one). Default: auto.",
-		false, "auto", "auto|time|step", cmd);
-	TCLAP::ValueArg<std::string> argPoses(
-		"p", "poses",
-		"Robot poses from this text file instead of the odometry (rawlog) or "
-		"the keyframe poses (simplemap). Lines 'key x y phi' in metres and "
-		"radians; see --poses-format.",
-		false, "", "FILE", cmd);
-	TCLAP::ValueArg<std::string> argSection(
-		"s", "section",
-		std::string("Section of the .ini that lists the maps (as "
-					"CMultiMetricMap reads it: evidentialGrid_count=1 and "
-					"[SECTION_evidentialGrid_00_creationOpts] etc.). "
-					"Default: ") +
-			kDefaultSection + ".",
-		false, kDefaultSection, "SECTION", cmd);
-	TCLAP::ValueArg<std::string> argConfig(
-		"c", "config",
-		"The map's .ini file (e.g. rawlogs/evgrid.ini); without it the map "
-		"takes its built-in defaults (0.10 m cells).",
-		false, "", "FILE.ini", cmd);
 	TCLAP::ValueArg<std::string> argOutput(
 		"o", "output-dir",
 		"Required. Output folder, created if missing; checked for writing "
 		"before any work.",
 		false, "", "DIR", cmd);
-	TCLAP::ValueArg<std::string> argInput(
-		"i", "input",
-		"Required. Rawlog (.rawlog, .rawlog.gz) or simplemap (.simplemap, "
-		".simplemap.gz); the kind is read from the file's content.",
-		false, "", "FILE", cmd);
+	CInputArgs inputArgs(cmd);
 
 	if (const auto exitCode = parse(cmd, kBuildName, argc, argv, first))
 		return exitCode;
 
-	if (argInput.getValue().empty())
-		throw UsageError("missing the input: -i FILE (a rawlog or simplemap)");
+	options.source = inputArgs.values();
 	if (argOutput.getValue().empty())
 		throw UsageError("missing the output folder: -o DIR");
 
-	options.input = argInput.getValue();
 	options.outputDir = argOutput.getValue();
-	options.config = argConfig.getValue();
-	options.section = argSection.getValue();
-	options.poses = argPoses.getValue();
-	options.poseTolerance = argTolerance.getValue();
 	options.quiet = argQuiet.getValue();
 	options.commandLine = joinCommandLine(argc, argv, first);
 	TGrowthOptions& growth = options.growth;
@@ -171,17 +130,6 @@ std::optional<int> parseOptions(
 	growth.animationEvery = argAnimationEvery.getValue();
 	growth.animationFps = argFps.getValue();
 
-	const std::string& format = argPosesFormat.getValue();
-	if (format == "auto") options.posesKind = CPoseFile::Kind::Auto;
-	else if (format == "time") options.posesKind = CPoseFile::Kind::Time;
-	else if (format == "step") options.posesKind = CPoseFile::Kind::Step;
-	else
-		throw UsageError(
-			"--poses-format must be auto, time or step, got '" + format + "'");
-	if (argPosesFormat.isSet() && options.poses.empty())
-		throw UsageError("--poses-format needs --poses");
-	if (!(options.poseTolerance >= 0.0))
-		throw UsageError("--pose-tolerance must be >= 0 seconds");
 	if (argEvery.isSet()) requireAtLeast("--every", growth.frameEvery, 1);
 	requireAtLeast("--animation-every", growth.animationEvery, 1);
 	if (!parseSize(
@@ -293,17 +241,11 @@ void build(const TBuildOptions& options, SteadyClock::time_point start)
 	// Everything that can be checked without reading the input, first: the
 	// output folder, then the small files.
 	COutputFolder out(options.outputDir);
-	std::unique_ptr<CEvidentialGridMap2D> map =
-		options.config.empty()
-		? std::make_unique<CEvidentialGridMap2D>()
-		: createMapFromConfig(options.config, options.section);
-	std::optional<CPoseFile> poseFile;
-	if (!options.poses.empty())
-		poseFile = CPoseFile::load(options.poses, options.posesKind);
-	CPoseSource poses(std::move(poseFile), options.poseTolerance);
+	const std::unique_ptr<CEvidentialGridMap2D> map = createMap(options.source);
+	CPoseSource poses = createPoseSource(options.source);
 
 	CProgress progress(CProgress::modeFor(options.quiet), kBuildName);
-	CInputWalker input(options.input, poses);
+	CInputWalker input(options.source.input, poses);
 	CGrowthRecorder growth(options.growth, out);
 	CScanInserter inserter(*map, input, growth);
 	input.walk(
@@ -317,7 +259,7 @@ void build(const TBuildOptions& options, SteadyClock::time_point start)
 	progress.finish();
 	if (inserter.counts().inserted == 0)
 		throw std::runtime_error(
-			options.input + ": no scan was inserted (" +
+			options.source.input + ": no scan was inserted (" +
 			scanAccount(inserter.counts()) + ")");
 	growth.finish();
 

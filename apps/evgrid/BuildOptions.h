@@ -4,7 +4,7 @@
 #include <string>
 
 #include "CGrowthRecorder.h"
-#include "CPoseFile.h"
+#include "InputOptions.h"
 
 namespace evgrid
 {
@@ -13,14 +13,8 @@ constexpr const char* kBuildName = "evgrid build";
 
 struct TBuildOptions
 {
-	std::string input, outputDir;
-	/** The map's .ini file and its section; no file: the map's defaults. */
-	std::string config, section;
-	/** A pose file; empty: the input's own poses. */
-	std::string poses;
-	CPoseFile::Kind posesKind = CPoseFile::Kind::Auto;
-	/** Seconds, for pose files by time stamp. */
-	double poseTolerance = 0.1;
+	TInputOptions source;
+	std::string outputDir;
 	TGrowthOptions growth;
 	bool quiet = false;
 	/** The command line, quoted for a shell, as the summary shows it. */

@@ -49,7 +49,7 @@ void writeSources(
 {
 	const TInputCounts& input = run.input;
 	os << "command: " << options.commandLine << "\n"
-	   << "input: " << options.input << "\n"
+	   << "input: " << options.source.input << "\n"
 	   << "  " << inputKind(input)
 	   << (input.compressed ? ", gzip-compressed" : "") << ", "
 	   << input.entries << (input.simplemap ? " keyframes" : " entries")
@@ -58,11 +58,7 @@ void writeSources(
 			   : "")
 	   << "\n"
 	   << "poses: " << run.poses << "\n"
-	   << "config: "
-	   << (options.config.empty() ? "none (the map's defaults)"
-								  : options.config + ", section [" +
-				   options.section + "]")
-	   << "\n";
+	   << "config: " << configDescription(options.source) << "\n";
 }
 
 void writeProducts(
