@@ -8,4 +8,5 @@ namespace evgrid
 int runBuild(int argc, char** argv, int first);
 int runInspect(int argc, char** argv, int first);
 int runExport(int argc, char** argv, int first);
+int runCompare(int argc, char** argv, int first);
 }  // namespace evgrid

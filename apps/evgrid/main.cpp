@@ -1,5 +1,6 @@
-/* evgrid: build, inspect and export evidential (Dempster-Shafer) occupancy
- * grid maps. `evgrid <subcommand> --help` documents each subcommand. */
+/* evgrid: build, inspect, export and compare evidential (Dempster-Shafer)
+ * occupancy grid maps. `evgrid <subcommand> --help` documents each
+ * subcommand. */
 
 #include <iostream>
 #include <string>
@@ -20,7 +21,11 @@ void printOverview(std::ostream& out)
 		   "  inspect  print a saved map's geometry, options and counts per "
 		   "decision, or one cell\n"
 		   "  export   write a saved map as PNG pictures, an MRPT .gridmap, or "
-		   "a ROS map_server PGM + YAML pair\n\n"
+		   "a ROS map_server PGM + YAML pair\n"
+		   "  compare  build our map and MRPT's COccupancyGridMap2D from the "
+		   "same scans; report\n"
+		   "           how their cells agree and each map's localization hit "
+		   "rate\n\n"
 		   "'evgrid <subcommand> --help' lists a subcommand's options.\n"
 		   "Exit codes: 0 success, 1 failure (the message names the file), 2 "
 		   "bad command line.\n";
@@ -50,6 +55,7 @@ int main(int argc, char** argv)
 	if (sub == "build") run = evgrid::runBuild;
 	else if (sub == "inspect") run = evgrid::runInspect;
 	else if (sub == "export") run = evgrid::runExport;
+	else if (sub == "compare") run = evgrid::runCompare;
 	else
 	{
 		evgrid::printError("evgrid", "unknown subcommand '" + sub + "'");

@@ -1,0 +1,78 @@
+/* evgrid compare: our map and MRPT's occupancy grid, built side by side from
+ * the same scans at the same poses, every N-th scan held out of both. */
+
+#include "CSideBySideMaps.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+#include "CInputWalker.h"
+#include "CommandLine.h"
+
+using mrpt::poses::CPose3D;
+using mrpt_evidential::CEvidentialGridMap2D;
+
+namespace evgrid
+{
+CSideBySideMaps::CSideBySideMaps(
+	std::unique_ptr<CEvidentialGridMap2D> ours, int holdout,
+	const CInputWalker& input)
+	: m_ours(std::move(ours)),
+	  m_mrpt(
+		  static_cast<float>(m_ours->getXMin()),
+		  static_cast<float>(m_ours->getXMax()),
+		  static_cast<float>(m_ours->getYMin()),
+		  static_cast<float>(m_ours->getYMax()),
+		  static_cast<float>(m_ours->getResolution())),
+	  m_holdout(holdout),
+	  m_input(input)
+{
+}
+
+void CSideBySideMaps::offer(
+	const mrpt::obs::CObservation2DRangeScan& scan,
+	const std::optional<CPose3D>& pose)
+{
+	++m_counts.total;
+	if (!pose)
+	{
+		++m_counts.withoutPose;
+		return;
+	}
+	if (++m_withPose % static_cast<std::size_t>(m_holdout) == 0)
+	{
+		++m_counts.heldOut;
+		m_heldOut.push_back({scan, *pose});
+		return;
+	}
+	++m_counts.offered;
+	const auto insertInto = [&](mrpt::maps::CMetricMap& map, const char* name) {
+		try
+		{
+			return map.insertObservation(scan, *pose);
+		}
+		catch (const std::exception& e)
+		{
+			throw std::runtime_error(
+				m_input.place() + ": " + name +
+				" cannot insert the scan: " + describe(e));
+		}
+	};
+	if (insertInto(*m_ours, "our map")) ++m_counts.oursInserted;
+	if (insertInto(m_mrpt, "MRPT's grid")) ++m_counts.mrptInserted;
+}
+
+void CSideBySideMaps::finish()
+{
+	// resizeGrid only ever grows the grid, keeping every cell; no margin, so
+	// that MRPT's extent is exactly the union (snapped to its cells).
+	m_mrpt.resizeGrid(
+		std::min(m_mrpt.getXMin(), static_cast<float>(m_ours->getXMin())),
+		std::max(m_mrpt.getXMax(), static_cast<float>(m_ours->getXMax())),
+		std::min(m_mrpt.getYMin(), static_cast<float>(m_ours->getYMin())),
+		std::max(m_mrpt.getYMax(), static_cast<float>(m_ours->getYMax())),
+		0.5f, false);
+}
+
+}  // namespace evgrid

@@ -1,0 +1,146 @@
+/* evgrid compare: our evidential grid against MRPT's COccupancyGridMap2D,
+ * built from the same scans at the same poses. This file reads the command
+ * line and runs the parts in order: both maps, the cell agreement, the
+ * localization test, the report. */
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <utility>
+
+#include <mrpt_evidential/support/AtomicFile.h>
+#include "CInputWalker.h"
+#include "CProgress.h"
+#include "CSideBySideMaps.h"
+#include "CommandLine.h"
+#include "CompareOptions.h"
+#include "CompareReport.h"
+#include "Commands.h"
+#include "InputOptions.h"
+#include "MapOutputs.h"
+
+namespace evgrid
+{
+namespace
+{
+std::optional<int> parseOptions(
+	int argc, char** argv, int first, TCompareOptions& options)
+{
+	TCLAP::CmdLine cmd(
+		"Builds, from one input, our evidential grid (settings from the .ini) "
+		"and MRPT's COccupancyGridMap2D (its default options, the same "
+		"resolution) side by side, inserting the same scans at the same "
+		"poses, and reports (1) how our map's decisions agree with MRPT's "
+		"occupied (getCell < 0.4) and free (getCell > 0.6) cells, and (2) the "
+		"localization hit rate of each map on the scans held out of both. "
+		"See doc/evgrid.md.",
+		' ', EVGRID_VERSION);
+	TCLAP::SwitchArg argQuiet(
+		"q", "quiet",
+		"Print nothing but errors (the report goes only to --output).", cmd,
+		false);
+	TCLAP::ValueArg<std::string> argOutput(
+		"", "output",
+		"Also write the report's numbers to this file as 'key value' lines, "
+		"atomically (a failed run leaves an earlier file as it was).",
+		false, "", "FILE", cmd);
+	TCLAP::ValueArg<int> argHoldout(
+		"", "holdout",
+		"Hold every N-th scan with a pose out of both maps, for the "
+		"localization test. At least 2, default 10.",
+		false, 10, "N", cmd);
+	CInputArgs inputArgs(cmd);
+
+	if (const auto exitCode = parse(cmd, kCompareName, argc, argv, first))
+		return exitCode;
+	options.source = inputArgs.values();
+	options.holdout = argHoldout.getValue();
+	requireAtLeast("--holdout", options.holdout, 2);
+	options.output = argOutput.getValue();
+	if (argOutput.isSet() && options.output.empty())
+		throw UsageError("--output needs a non-empty value");
+	options.quiet = argQuiet.getValue();
+	return std::nullopt;
+}
+
+/** Before any work: the report's folder exists (created if needed) and can
+ * be written, and the file is not a folder. */
+void checkOutputFile(const std::string& path)
+{
+	namespace fs = std::filesystem;
+	std::string dir = fs::path(path).parent_path().string();
+	createFolder(dir);
+	if (dir.empty()) dir = ".";
+	std::error_code ec;
+	if (fs::is_directory(path, ec))
+		throw std::runtime_error(path + ": is a folder, not a file");
+	if (access(dir.c_str(), W_OK) != 0)
+		throw std::runtime_error(
+			path + ": cannot be written: its folder is not writable");
+}
+
+void compare(const TCompareOptions& options)
+{
+	if (!options.output.empty()) checkOutputFile(options.output);
+	auto ours = createMap(options.source);
+	CPoseSource poses = createPoseSource(options.source);
+	CInputWalker input(options.source.input, poses);
+	CSideBySideMaps maps(std::move(ours), options.holdout, input);
+
+	const auto mode = CProgress::modeFor(options.quiet);
+	CProgress building(mode, std::string(kCompareName) + " (maps)");
+	input.walk(
+		{[] {},
+		 [&maps](const auto& scan, const auto& pose) {
+			 maps.offer(scan, pose);
+		 },
+		 [&](double fraction) {
+			 building.update(fraction, maps.counts().offered);
+		 }});
+	building.finish();
+	const TSideBySideCounts& n = maps.counts();
+	if (n.oursInserted == 0 || n.mrptInserted == 0)
+		throw std::runtime_error(
+			options.source.input + ": a map took no scan (" +
+			std::to_string(n.total) + " 2-D scans, " +
+			std::to_string(n.withoutPose) + " without a pose, " +
+			std::to_string(n.heldOut) + " held out; ours took " +
+			std::to_string(n.oursInserted) + ", MRPT " +
+			std::to_string(n.mrptInserted) + ")");
+	maps.finish();
+
+	TCompareRecord run;
+	run.poses = poses.description();
+	run.agreement = compareCells(maps.mrpt(), maps.ours());
+	CProgress localizing(mode, std::string(kCompareName) + " (localization)");
+	const double steps = 2.0 * static_cast<double>(maps.heldOut().size());
+	std::size_t done = 0;
+	const auto afterScan = [&] {
+		++done;
+		localizing.update(static_cast<double>(done) / steps, done);
+	};
+	run.ours = scoreLocalization(maps.ours(), maps.heldOut(), afterScan);
+	run.mrpt = scoreLocalization(maps.mrpt(), maps.heldOut(), afterScan);
+	localizing.finish();
+
+	if (!options.output.empty())
+		mrpt_evidential::detail::writeFileAtomically(
+			options.output, [&](std::ostream& os) {
+				writeKeyValues(os, options, maps, run);
+			});
+	if (!options.quiet) printReport(std::cout, options, maps, run);
+}
+}  // namespace
+
+int runCompare(int argc, char** argv, int first)
+{
+	TCompareOptions options;
+	if (const auto exitCode = parseOptions(argc, argv, first, options))
+		return *exitCode;
+	compare(options);
+	return 0;
+}
+
+}  // namespace evgrid
