@@ -10,6 +10,8 @@
  *                                            an action/sensory-frame rawlog
  *   evgrid_check to-obs-only RAWLOG OUT   -> OUT (gzip): the same rawlog in the
  *                                            observation-only format
+ *   evgrid_check farther RAWLOG M OUT     -> OUT (gzip): the same rawlog, every
+ *                                            scan's ranges M metres longer
  * Exit code 0 on success, 1 with a message otherwise. */
 
 #include <mrpt/core/Clock.h>
@@ -165,6 +167,24 @@ int toObservationOnly(const std::string& rawlog, const std::string& out)
 	});
 	return 0;
 }
+int farther(const std::string& rawlog, double metres, const std::string& out)
+{
+	mrpt::io::CFileGZOutputStream f(out);
+	auto archive = mrpt::serialization::archiveFrom(f);
+	forEachObject(rawlog, [&](const auto& object) {
+		if (const auto frame = std::dynamic_pointer_cast<CSensoryFrame>(object))
+			for (const auto& obs : *frame)
+				if (auto* scan = dynamic_cast<CObservation2DRangeScan*>(obs.get()))
+				{
+					scan->maxRange += static_cast<float>(metres);
+					for (std::size_t i = 0; i < scan->getScanSize(); ++i)
+						scan->setScanRange(
+							i, scan->getScanRange(i) + static_cast<float>(metres));
+				}
+		archive << *object;
+	});
+	return 0;
+}
 }  // namespace
 
 int main(int argc, char** argv)
@@ -180,6 +200,8 @@ int main(int argc, char** argv)
 			return odometryPath(argv[2], argv[3]);
 		if (what == "to-obs-only" && argc == 4)
 			return toObservationOnly(argv[2], argv[3]);
+		if (what == "farther" && argc == 5)
+			return farther(argv[2], std::stod(argv[3]), argv[4]);
 		std::cerr << "usage: see the comment at the top of evgrid_check.cpp\n";
 		return 2;
 	}

@@ -1,0 +1,134 @@
+# evgrid compare: our map against MRPT's occupancy grid on the simulated room
+# with its true poses and on MRPT's Malaga simplemap. Checks the report's
+# numbers add up, that MRPT's grid localizes the held-out scans of the room,
+# that --output holds the numbers stdout shows and is written atomically, and
+# the usage errors.
+source "$(dirname "$0")/lib.sh"
+
+RAWLOGS=$(dirname "$EVGRID_INI")
+room="$RAWLOGS/room_door_box.rawlog"
+gt="$RAWLOGS/room_door_box.gt.txt"
+
+# value KEY FILE: the value of a `key value` line; fails if the key is absent.
+value() {
+  awk -v k="$1" '$1 == k { sub(/^[^ ]+ /, ""); print; found = 1 } END { exit !found }' "$2" ||
+    fail "$2 has no key $1"
+}
+
+# check_report FILE STDOUT: the keys exist, the counts and percentages add up,
+# and stdout shows the very numbers of FILE.
+check_report() {
+  local file=$1 stdout=$2 prefix decision n sum pct
+  [ "$(value scans_total "$file")" -eq $(($(value scans_without_pose "$file") + \
+    $(value scans_held_out "$file") + $(value scans_given_to_maps "$file"))) ] ||
+    fail "$file: the scans do not add up"
+  [ "$(value mrpt_cells "$file")" -eq $(($(value mrpt_occupied_cells "$file") + \
+    $(value mrpt_free_cells "$file") + $(value mrpt_neither_cells "$file"))) ] ||
+    fail "$file: MRPT's cells do not add up"
+  contains "$stdout" "MRPT occupied (getCell < $(value mrpt_occupied_below "$file")): $(value mrpt_occupied_cells "$file") cells"
+  contains "$stdout" "MRPT free (getCell > $(value mrpt_free_above "$file")): $(value mrpt_free_cells "$file") cells"
+  for prefix in mrpt_occupied mrpt_free; do
+    # No cells in this state: stdout says so (checked by the caller) and
+    # shows no rows.
+    [ "$(value "${prefix}_cells" "$file")" -gt 0 ] || continue
+    sum=0
+    pct=""
+    for decision in occupied free unknown conflict; do
+      n=$(value "${prefix}_ours_$decision" "$file")
+      sum=$((sum + n))
+      pct="$pct $(value "${prefix}_ours_${decision}_pct" "$file")"
+      # The row of this decision in the block of this MRPT state on stdout.
+      [ "$(awk -v block="MRPT ${prefix#mrpt_}" -v d="$decision" '
+          /^  MRPT / { inside = index($0, block " ") == 3 }
+          inside && $1 == d && NF == 3 { print $2, $3 }' "$stdout")" = \
+        "$n $(value "${prefix}_ours_${decision}_pct" "$file")%" ] ||
+        fail "$stdout does not show ${prefix}_ours_$decision as $file does"
+    done
+    [ "$sum" -eq "$(value "${prefix}_cells" "$file")" ] || fail "$file: $prefix does not add up"
+    echo "$pct" | awk '{ s = $1 + $2 + $3 + $4; exit !(s > 99.97 && s < 100.03) }' ||
+      fail "$file: the shares of $prefix sum to other than 100:$pct"
+  done
+  # The localization table: "hits  20  21" and so on, ours then MRPT.
+  for row in "held-out scans:localization_scans" "hits:hits" "hit rate %:hit_rate_pct" \
+    "mean position error m:mean_position_error_m" "mean heading error deg:mean_heading_error_deg"; do
+    local label=${row%%:*} key=${row#*:}
+    [ "$(grep -E "^  $label +" "$stdout" | awk '{ print $(NF - 1), $NF }')" = \
+      "$(value "ours_$key" "$file") $(value "mrpt_$key" "$file")" ] ||
+      fail "$stdout does not show ${key} as $file does"
+  done
+}
+
+# 1. The simulated room with its ground truth: 800 scans, 80 held out.
+run 0 "$EVGRID" compare -c "$EVGRID_INI" -i "$room" -p "$gt" --poses-format time --output "$T/room.txt"
+cp "$OUT" "$T/room.stdout"
+check_report "$T/room.txt" "$T/room.stdout"
+for key in scans_total:800 scans_held_out:80 scans_given_to_maps:720 scans_inserted_ours:720 \
+  scans_inserted_mrpt:720 holdout:10 resolution:0.05 ours_localization_scans:80 mrpt_localization_scans:80; do
+  [ "$(value "${key%%:*}" "$T/room.txt")" = "${key#*:}" ] || fail "${key%%:*} is not ${key#*:}"
+done
+# True poses, a simulated lidar: MRPT's grid finds the held-out scans' poses
+# (all 80 when measured; 90% leaves room for changes of MRPT's defaults). Its
+# occupied cells lie on walls our map also holds (occupied or conflict), and
+# our map calls almost none of its free cells occupied.
+awk '{ exit !($1 >= 90) }' <<<"$(value mrpt_hit_rate_pct "$T/room.txt")" ||
+  fail "MRPT's hit rate on the room is $(value mrpt_hit_rate_pct "$T/room.txt")%"
+awk '{ exit !($1 + $2 >= 85) }' <<<"$(value mrpt_occupied_ours_occupied_pct "$T/room.txt") $(value mrpt_occupied_ours_conflict_pct "$T/room.txt")" ||
+  fail "our map sees few of MRPT's occupied cells as occupied or conflict"
+awk '{ exit !($1 < 1) }' <<<"$(value mrpt_free_ours_occupied_pct "$T/room.txt")" ||
+  fail "our map calls many of MRPT's free cells occupied"
+# The same run gives the same numbers.
+run 0 "$EVGRID" compare -q -c "$EVGRID_INI" -i "$room" -p "$gt" --output "$T/again.txt"
+[ ! -s "$OUT" ] || fail "--quiet printed the report"
+cmp -s "$T/room.txt" "$T/again.txt" || fail "a second run wrote other numbers"
+
+# 2. A failed run leaves the earlier file as it was, and no temporary file.
+mkdir "$T/kept"
+cp "$T/room.txt" "$T/kept/room.txt"
+before=$(fingerprint "$T/kept")
+run 1 "$EVGRID" compare -i "$T/none.rawlog" --output "$T/kept/room.txt"
+contains "$ERR" "evgrid compare: error: $T/none.rawlog: cannot open"
+[ "$(fingerprint "$T/kept")" = "$before" ] || fail "a failed run changed $T/kept"
+head -c 300000 "$room" >"$T/cut.rawlog"
+run 1 "$EVGRID" compare -i "$T/cut.rawlog" --output "$T/kept/room.txt"
+contains "$ERR" "$T/cut.rawlog: entry "
+contains "$ERR" "truncated file?"
+[ "$(fingerprint "$T/kept")" = "$before" ] || fail "a failed run changed $T/kept"
+
+# 3. MRPT's Malaga simplemap: real SICK scans, the keyframes' poses.
+run 0 "$EVGRID" compare -c "$EVGRID_INI" -i "$DATASETS/malaga-cs-fac-building.simplemap.gz" --output "$T/malaga.txt"
+cp "$OUT" "$T/malaga.stdout"
+check_report "$T/malaga.txt" "$T/malaga.stdout"
+contains "$T/malaga.stdout" "poses: the simplemap's"
+[ "$(value scans_total "$T/malaga.txt") $(value scans_held_out "$T/malaga.txt")" = "99 9" ] ||
+  fail "Malaga: not 99 scans with 9 held out"
+
+# 4. Nothing to share: every range 16 m longer, beyond MRPT's 15 m insertion
+#    limit, leaves its grid without an occupied cell; on that empty grid every
+#    perturbation scores the same, and the first, (-0.30, -0.30, -5 deg),
+#    wins. More scans than --holdout N: none held out.
+run 0 "$EVGRID_CHECK" farther "$room" 16 "$T/far.rawlog.gz"
+run 0 "$EVGRID" compare -i "$T/far.rawlog.gz" -p "$gt" --output "$T/far.txt"
+cp "$OUT" "$T/far.stdout"
+check_report "$T/far.txt" "$T/far.stdout"
+contains "$T/far.stdout" "MRPT occupied (getCell < 0.4): 0 cells, none to compare"
+[ "$(value mrpt_occupied_ours_occupied_pct "$T/far.txt")" = "n/a" ] || fail "a share of no cells"
+[ "$(value mrpt_hits "$T/far.txt") $(value mrpt_mean_position_error_m "$T/far.txt") $(value mrpt_mean_heading_error_deg "$T/far.txt")" = \
+  "0 0.4243 5.00" ] || fail "ties on an empty grid do not go to the first perturbation"
+run 0 "$EVGRID" compare -i "$room" --holdout 1000 --output "$T/none-held.txt"
+contains "$OUT" "no scan was held out (fewer than 1000 scans with a pose)"
+[ "$(value scans_held_out "$T/none-held.txt") $(value ours_hit_rate_pct "$T/none-held.txt")" = "0 n/a" ] ||
+  fail "no held-out scan: not 0 and n/a"
+
+# 5. Usage errors: exit 2 before any work.
+run 2 "$EVGRID" compare -i "$room" --holdout 1
+contains "$ERR" "--holdout must be at least 2, got 1"
+run 2 "$EVGRID" compare -i "$room" --holdout some
+contains "$ERR" "bad value 'some' for --holdout"
+run 2 "$EVGRID" compare --output "$T/x.txt"
+contains "$ERR" "missing the input"
+run 2 "$EVGRID" compare -i "$room" --output ""
+contains "$ERR" "--output needs a non-empty value"
+run 2 "$EVGRID" compare -i "$room" --poses-format time
+contains "$ERR" "--poses-format needs --poses"
+[ ! -e "$T/x.txt" ] || fail "a usage error wrote the output"
+echo "evgrid_compare: OK"
