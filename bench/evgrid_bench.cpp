@@ -283,7 +283,9 @@ void ourPolarToCartesian(benchmark::State& state, ScanKind kind, double res)
 		transform.forEachInformedCell(
 			grid.geometry(),
 			[&mixedSink](std::size_t, const Mass& m) { mixedSink += m.free; },
-			[&uniformSink](std::size_t idx) { uniformSink += idx; });
+			[&uniformSink](std::size_t first, std::size_t count) {
+				for (std::size_t idx = first; idx < first + count; ++idx) uniformSink += idx;
+			});
 		benchmark::DoNotOptimize(mixedSink);
 		benchmark::DoNotOptimize(uniformSink);
 	}

@@ -37,7 +37,7 @@ TEST(QuantizedMass, EncodedMassesStayValidAndClose)
 		const Mass m = gen();
 		QuantizedCell c;
 		encodeMass(m, c);
-		ASSERT_TRUE(isConsistent(c));
+		ASSERT_TRUE(isConsistent(c, true));
 		const Mass back = decodeMass(c);
 		ASSERT_TRUE(back.isValid(1e-12)) << back;
 		// Three roundings to nearest, and at most one step given back by the
@@ -50,12 +50,12 @@ TEST(QuantizedMass, EncodedMassesStayValidAndClose)
 	// Total conflict is stored one step below 1, so that 1 - m(empty) never
 	// rounds to 0 and the normal part keeps its ratios (issue 14).
 	encodeMass(Mass::degenerate(), c);
-	EXPECT_EQ(c.conflict, kMaxStoredConflict);
+	EXPECT_EQ(c.aside, kMaxStoredConflict);
 	EXPECT_MASS_NEAR(decodeMass(c), Mass::degenerate(), 1.0 / kMassScale);
 	EXPECT_EQ(decide(decodeMass(c)), Decision::Conflict);
 	// Three masses of 1/3 round up together: the sum must not pass the scale.
 	encodeMass(Mass{1.0 / 3, 1.0 / 3, 1.0 / 3, 0.0}, c);
-	EXPECT_TRUE(isConsistent(c));
+	EXPECT_TRUE(isConsistent(c, true));
 	EXPECT_GE(decodeMass(c).unknown, 0.0);
 }
 
@@ -244,18 +244,18 @@ TEST(GridStorage, AssignRejectsInconsistentState)
 	EvidentialGridStorage s;
 	GridGeometry g{0.0, 0.0, 0.1, 2, 2};
 	std::vector<QuantizedCell> cells(4);
-	EXPECT_NO_THROW(s.assign(g, cells, {0.0, 1.0}, 2, 0.1));
+	EXPECT_NO_THROW(s.assign(g, cells, {0.0, 1.0}, 2, 0.1, true));
 	EXPECT_EQ(s.geometry().sizeX, 2);
-	EXPECT_THROW(s.assign(g, std::vector<QuantizedCell>(3), {0.0}, 1, 0.0), std::invalid_argument);
-	EXPECT_THROW(s.assign(g, cells, {}, 1, 0.0), std::invalid_argument);
-	EXPECT_THROW(s.assign(g, cells, {1.0, 0.0}, 1, 0.0), std::invalid_argument);
-	EXPECT_THROW(s.assign(g, cells, {0.0}, 1, -1.0), std::invalid_argument);
+	EXPECT_THROW(s.assign(g, std::vector<QuantizedCell>(3), {0.0}, 1, 0.0, true), std::invalid_argument);
+	EXPECT_THROW(s.assign(g, cells, {}, 1, 0.0, true), std::invalid_argument);
+	EXPECT_THROW(s.assign(g, cells, {1.0, 0.0}, 1, 0.0, true), std::invalid_argument);
+	EXPECT_THROW(s.assign(g, cells, {0.0}, 1, -1.0, true), std::invalid_argument);
 	cells[1].free = 40000;
 	cells[1].occupied = 40000;
-	EXPECT_THROW(s.assign(g, cells, {0.0}, 1, 0.0), std::invalid_argument);
+	EXPECT_THROW(s.assign(g, cells, {0.0}, 1, 0.0, true), std::invalid_argument);
 	cells[1] = QuantizedCell{};
 	cells[2].stamp = 5;
-	EXPECT_THROW(s.assign(g, cells, {0.0}, 1, 0.0), std::invalid_argument);
+	EXPECT_THROW(s.assign(g, cells, {0.0}, 1, 0.0, true), std::invalid_argument);
 }
 
 TEST(BadFile, InconsistentStorageIsRejected)
@@ -267,7 +267,7 @@ TEST(BadFile, InconsistentStorageIsRejected)
 		 {GridGeometry{1e308, 0.0, 1e308, 2, 2}, GridGeometry{-2.2e43, -1.0, 5.6e243, 2, 2},
 		  GridGeometry{0.0, 0.0, 1e-9, 2, 2}, GridGeometry{9.9e8, 0.0, 1e7, 2, 2}})
 		EXPECT_THROW(
-			s.assign(g, std::vector<QuantizedCell>(4), {0.0}, 0, 0.0),
+			s.assign(g, std::vector<QuantizedCell>(4), {0.0}, 0, 0.0, true),
 			std::invalid_argument)
 			<< g.xMin << " " << g.resolution;
 	// A file may hold several insertion times only once something was
@@ -277,9 +277,9 @@ TEST(BadFile, InconsistentStorageIsRejected)
 	cells[3].stamp = 2;
 	cells[3].free = 30000;
 	EXPECT_THROW(
-		s.assign({0.0, 0.0, 1.0, 2, 2}, cells, {1.0, 2.0, 3.0}, 0, 0.5),
+		s.assign({0.0, 0.0, 1.0, 2, 2}, cells, {1.0, 2.0, 3.0}, 0, 0.5, true),
 		std::invalid_argument);
-	EXPECT_NO_THROW(s.assign({0.0, 0.0, 1.0, 2, 2}, cells, {1.0, 2.0, 3.0}, 3, 0.5));
+	EXPECT_NO_THROW(s.assign({0.0, 0.0, 1.0, 2, 2}, cells, {1.0, 2.0, 3.0}, 3, 0.5, true));
 	s.beginInsertion(10.0);
 	EXPECT_TRUE(s.read(3).isValid(1e-9));
 }

@@ -132,10 +132,14 @@ TEST(PolarToCartesian, VisitsExactlyTheInformedCellsWithTheirMix)
 				[&](std::size_t idx, const Mass& m) {
 					ASSERT_TRUE(seen.emplace(idx, m).second) << "visited twice";
 				},
-				[&](std::size_t idx) {
-					ASSERT_TRUE(seen.emplace(idx, transform.uniformMass()).second)
-						<< "visited twice";
-					++uniform;
+				[&](std::size_t first, std::size_t count) {
+					ASSERT_GT(count, 0u);
+					for (std::size_t idx = first; idx < first + count; ++idx)
+					{
+						ASSERT_TRUE(seen.emplace(idx, transform.uniformMass()).second)
+							<< "visited twice";
+						++uniform;
+					}
 				});
 
 			std::size_t informed = 0;

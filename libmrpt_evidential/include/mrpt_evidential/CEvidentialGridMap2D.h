@@ -5,6 +5,7 @@
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/maps/CMetricMap.h>
 #include <mrpt_evidential/EnumNames.h>
+#include <mrpt_evidential/Motion.h>
 #include <mrpt_evidential/algebra/combination.h>
 #include <mrpt_evidential/grid/EvidentialGridStorage.h>
 #include <mrpt_evidential/scan/CPolarSourceGrid.h>
@@ -28,6 +29,8 @@ class COccupancyGridMap2D;
 
 namespace mrpt_evidential
 {
+class CScanImpacts;
+
 /** An evidential (Dempster-Shafer) occupancy grid, an MRPT metric map.
  *
  * Each cell holds a mass function on {F, O} (Mass): free, occupied, unknown
@@ -132,6 +135,34 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	};
 	TDecisionCounts countDecisions() const;
 
+	/** @name The motion layer
+	 * Maps whose conflictHandling is not Keep remember, per cell, the latest
+	 * time something appeared there or left (doc/dynamics.md). Maps that
+	 * keep conflict have no motion layer and read Motion::None everywhere.
+	 * @{ */
+	/** The motion of the cell holding (x, y) as of the latest insertion:
+	 * Appeared or Disappeared if that happened within the last motionWindow
+	 * seconds of data time, else None; None outside the map. Never throws. */
+	Motion getCellMotion(double x, double y) const;
+	/** getCellMotion() of cell (cx, cy); None outside the map. Never
+	 * throws. */
+	Motion getCellMotionByIndex(int cx, int cy) const;
+	/** Data time (seconds, as latestTime()) of the event getCellMotion()
+	 * reports for (x, y); NaN when it reports None. Never throws. */
+	double getCellMotionTime(double x, double y) const;
+	/** Number of cells per motion. */
+	struct TMotionCounts
+	{
+		std::size_t appeared = 0, disappeared = 0;
+	};
+	TMotionCounts countMotion() const;
+	/** Centres of the cells whose motion is Appeared: what a planner must
+	 * treat as moving obstacles. */
+	std::vector<std::pair<double, double>> getAppearedCellCenters() const;
+	/** Centres of the cells whose motion is Disappeared. */
+	std::vector<std::pair<double, double>> getDisappearedCellCenters() const;
+	/** @} */
+
 	/** Data time of the latest observation inserted, seconds
 	 * (mrpt::Clock::toDouble of its timestamp); 0 before the first. */
 	double latestTime() const { return m_grid.latestTime(); }
@@ -154,21 +185,28 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	/** BetP in grey levels: white = free (BetP 0), black = occupied (BetP 1),
 	 * as MRPT draws occupancy grids. */
 	void getAsBetPImage(mrpt::img::CImage& img) const;
-	/** Conflict in grey levels: black = none, white = total conflict. */
+	/** Conflict in grey levels: black = none, white = total conflict (black
+	 * everywhere in a map without conflict: see getAsMotionImage()). */
 	void getAsConflictImage(mrpt::img::CImage& img) const;
+	/** The motion layer over the static map: the static map as BetP in grey
+	 * levels (white free, black occupied, mid-grey unknown), cells where
+	 * something appeared in orange (255, 128, 0), cells it left in blue
+	 * (0, 160, 255). */
+	void getAsMotionImage(mrpt::img::CImage& img) const;
 	/** Fills an occupancy grid of the same geometry with occupancy = BetP. */
 	void getAsOccupancyGrid(mrpt::maps::COccupancyGridMap2D& grid) const;
 	/** Writes a ROS map_server pair, `<prefix>.pgm` and `<prefix>.yaml`
 	 * (occupancy = BetP; unknown cells as 205). Written atomically.
 	 * \throws std::runtime_error if a file cannot be written. */
 	void saveAsROSMap(const std::string& prefix) const;
-	/** Writes the three pictures above as `<prefix>evidential.png`,
-	 * `<prefix>betp.png` and `<prefix>conflict.png` (pictureNames()), each
+	/** Writes the four pictures above as `<prefix>evidential.png`,
+	 * `<prefix>betp.png`, `<prefix>conflict.png` and `<prefix>motion.png`
+	 * (pictureNames()), each
 	 * atomically; the prefix is a folder ending in '/' or a file name's stem.
 	 * \throws std::runtime_error if a file cannot be written. */
 	void savePictures(const std::string& prefix) const;
 	/** The names savePictures() appends to its prefix. */
-	static const std::array<const char*, 3>& pictureNames();
+	static const std::array<const char*, 4>& pictureNames();
 	/** The geometry in four lines, each after `indent`: "x: [xmin, xmax]
 	 * m", "y: [ymin, ymax] m", "resolution: r m", "cells: NX x NY (budget
 	 * B)", numbers in their shortest exact text. */
@@ -240,11 +278,30 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 		 * pose for it to count as planar, radians (degrees in files),
 		 * [0, pi/2], default 0.05 degrees (as COccupancyGridMap2D). */
 		double horizontalTolerance = 0.05 * M_PI / 180.0;
-		/** `conflictHandling`: Keep (default), ToUnknown or Normalize. */
-		ConflictHandling conflictHandling = ConflictHandling::Keep;
+		/** `conflictHandling`: what leaves a cell of the conflict of each
+		 * fusion. Normalize (default): the cell keeps the rest renormalized
+		 * (Dempster's rule for the conjunctive rule) and the motion layer
+		 * keeps what caused it. ToUnknown: the conflict becomes ignorance,
+		 * with the motion layer too. Keep: the cell accumulates it (the
+		 * seed's conjunctive grid); such a map has no motion layer, its
+		 * conflict is where things changed. doc/dynamics.md. */
+		ConflictHandling conflictHandling = ConflictHandling::Normalize;
 		/** `growthMargin`: metres added beyond the scan when the grid grows,
 		 * >= 0, default 5. */
 		double growthMargin = 5.0;
+		/** `motionWindow`: seconds of data time during which a cell where
+		 * something appeared or left reads so (getCellMotion), (0, 1e6],
+		 * default 2. */
+		double motionWindow = 2.0;
+		/** `motionMinConflict`: least conflict of one cause, seen free
+		 * before and occupied now or the other way round, for a fusion to be
+		 * a motion event, (0, 1], default 0.5. */
+		double motionMinConflict = 0.5;
+		/** `motionClearance`: metres; a change closer than this to static
+		 * structure (cells that lean occupied and are not themselves moving)
+		 * is taken for the error of the robot's pose, not for motion,
+		 * [0, 10], default 0.15. */
+		double motionClearance = 0.15;
 
 		/** Reads the keys above from `section`; absent keys keep their value.
 		 * \throws std::invalid_argument naming the key and value of the first
@@ -365,6 +422,13 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	bool insertScan(
 		const mrpt::obs::CObservation2DRangeScan& scan,
 		const mrpt::poses::CPose3D& robotPose);
+	/** Fuses the scan's cells into a map that keeps conflict. */
+	void fuseKeepingConflict(const CScanImpacts& impacts);
+	/** Fuses the scan's cells into a map without conflict, and settles its
+	 * motion events. */
+	void fuseWithMotion(const CScanImpacts& impacts);
+	/** What the motion layer says of cell idx. */
+	Motion motionOf(std::size_t idx) const;
 	/** Drops the likelihood field; the next likelihood rebuilds it. */
 	void invalidateLikelihoodCache();
 

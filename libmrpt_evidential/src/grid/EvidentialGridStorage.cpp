@@ -13,8 +13,23 @@ namespace mrpt_evidential
 {
 namespace
 {
+/** Files of serialization version 1 kept up to this many insertion times. */
+constexpr std::size_t kMaxStampsOfVersion1 = 65535;
 /** Above this exponent the gains are rebased, long before exp() overflows. */
 constexpr double kMaxGainExponent = 200.0;
+/** A rebase keeps the stamps of events whose decay exponent is at most this,
+ * so that the next rebase is at least as far away again. */
+constexpr double kMaxKeptEventExponent = 100.0;
+/** A rebase keeps at most this many event times: the other half of the
+ * table is room for new insertions. */
+constexpr std::size_t kMaxKeptEventTimes = EvidentialGridStorage::kMaxStamps / 2;
+
+std::uint16_t ceilingFor(bool keepsConflict)
+{
+	return keepsConflict
+		? static_cast<std::uint16_t>(kMassScale)
+		: quantizeMass(EvidentialGridStorage::kMaxCertainty);
+}
 }  // namespace
 
 void EvidentialGridStorage::reset(
@@ -93,6 +108,31 @@ void EvidentialGridStorage::setDecayRate(double perSecond)
 	updateGains();
 }
 
+QuantizedCell EvidentialGridStorage::withoutConflict(QuantizedCell c)
+{
+	const std::uint16_t ceiling = ceilingFor(false);
+	c.aside = 0;
+	c.free = std::min(c.free, ceiling);
+	c.occupied = std::min(c.occupied, ceiling);
+	return c;
+}
+
+void EvidentialGridStorage::setKeepsConflict(bool keeps)
+{
+	if (keeps == m_keepsConflict) return;
+	for (QuantizedCell& c : m_cells) c = keeps ? QuantizedCell{0, c.free, c.occupied, c.stamp} : withoutConflict(c);
+	m_keepsConflict = keeps;
+	m_ceiling = ceilingFor(keeps);
+}
+
+void EvidentialGridStorage::setEventRetention(double seconds)
+{
+	if (!(seconds >= 0.0))
+		throw std::invalid_argument(
+			"event retention must be >= 0 s, got " + detail::shortestText(seconds));
+	m_eventRetention = seconds;
+}
+
 void EvidentialGridStorage::beginInsertion(double t)
 {
 	if (!std::isfinite(t))
@@ -130,11 +170,50 @@ void EvidentialGridStorage::rebaseStamps(double to)
 		for (std::size_t s = 0; s < factor.size(); ++s)
 			factor[s] = std::exp(-m_decayRate * (to - m_stampTimes[s]));
 		for (QuantizedCell& c : m_cells)
-			if (factor[c.stamp] < 1.0) encodeMass(decayed(c, factor[c.stamp]), c);
+		{
+			const double d = factor[c.stamp];
+			if (d >= 1.0) continue;
+			if (m_keepsConflict)
+				encodeMass(decayed(decodeMass(c), d), c);
+			else
+				encodeNormal(decayed(decodeNormal(c), d), c);
+		}
 	}
-	for (QuantizedCell& c : m_cells) c.stamp = 0;
-	m_stampTimes.assign(1, to);
-	m_currentStamp = 0;
+	// The times of recent events survive, oldest first; `to` comes last and
+	// is every cell's stamp.
+	std::vector<double> times;
+	std::vector<std::uint16_t> newStamp(m_stampTimes.size(), kEventStampMask);
+	if (!m_keepsConflict)
+	{
+		std::size_t first = m_stampTimes.size();
+		while (first > 0 && m_stampTimes.size() - first < kMaxKeptEventTimes)
+		{
+			const double t = m_stampTimes[first - 1];
+			if (t < to - m_eventRetention ||
+				m_decayRate * (to - t) > kMaxKeptEventExponent)
+				break;
+			--first;
+		}
+		for (std::size_t s = first; s < m_stampTimes.size(); ++s)
+			if (m_stampTimes[s] < to)
+			{
+				newStamp[s] = static_cast<std::uint16_t>(times.size());
+				times.push_back(m_stampTimes[s]);
+			}
+	}
+	const auto present = static_cast<std::uint16_t>(times.size());
+	times.push_back(to);
+	for (std::size_t s = 0; s < m_stampTimes.size(); ++s)
+		if (m_stampTimes[s] == to) newStamp[s] = present;
+	for (QuantizedCell& c : m_cells)
+	{
+		c.stamp = present;
+		if (m_keepsConflict || eventOf(c) == CellEvent::None) continue;
+		const std::uint16_t s = newStamp[eventStampOf(c)];
+		c.aside = s == kEventStampMask ? 0 : packEvent(eventOf(c), s);
+	}
+	m_stampTimes = std::move(times);
+	m_currentStamp = present;
 	updateGains();
 }
 
@@ -149,7 +228,8 @@ void EvidentialGridStorage::updateGains()
 
 void EvidentialGridStorage::assign(
 	const GridGeometry& geometry, std::vector<QuantizedCell> cells,
-	std::vector<double> stampTimes, std::size_t insertions, double decayRate)
+	std::vector<double> stampTimes, std::size_t insertions, double decayRate,
+	bool keepsConflict)
 {
 	if (geometry.sizeX < 0 || geometry.sizeY < 0 ||
 		!GridGeometry::withinLimits(
@@ -162,7 +242,7 @@ void EvidentialGridStorage::assign(
 			" does not match the geometry");
 	// Before the first insertion there is one time: the first insertion
 	// starts the table again, and must not leave a cell with a later stamp.
-	if (stampTimes.empty() || stampTimes.size() > kMaxStamps ||
+	if (stampTimes.empty() || stampTimes.size() > kMaxStampsOfVersion1 ||
 		(insertions == 0 && stampTimes.size() != 1))
 		throw std::invalid_argument("invalid number of insertion times");
 	for (std::size_t i = 0; i < stampTimes.size(); ++i)
@@ -172,16 +252,23 @@ void EvidentialGridStorage::assign(
 	if (!(decayRate >= 0.0 && std::isfinite(decayRate)) ||
 		decayRate * (stampTimes.back() - stampTimes.front()) > kMaxGainExponent)
 		throw std::invalid_argument("invalid decay rate");
+	const std::uint16_t ceiling = ceilingFor(keepsConflict);
 	for (const QuantizedCell& c : cells)
-		if (!isConsistent(c) || c.stamp >= stampTimes.size())
-			throw std::invalid_argument("a cell holds an invalid mass or stamp");
+		if (!isConsistent(c, keepsConflict) || c.stamp >= stampTimes.size() ||
+			(!keepsConflict &&
+			 (std::max(c.free, c.occupied) > ceiling ||
+			  (eventOf(c) != CellEvent::None && eventStampOf(c) >= stampTimes.size()))))
+			throw std::invalid_argument("a cell holds an invalid mass, stamp or event");
 	m_geometry = geometry;
 	m_cells = std::move(cells);
 	m_stampTimes = std::move(stampTimes);
 	m_insertions = insertions;
 	m_decayRate = decayRate;
+	m_keepsConflict = keepsConflict;
+	m_ceiling = ceiling;
 	m_currentStamp = static_cast<std::uint16_t>(m_stampTimes.size() - 1);
 	updateGains();
+	if (m_stampTimes.size() > kMaxStamps) rebaseStamps(latestTime());
 }
 
 }  // namespace mrpt_evidential

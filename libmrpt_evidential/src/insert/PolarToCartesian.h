@@ -132,12 +132,16 @@ class CPolarToCartesian
 	const Mass& uniformMass() const { return m_uniformMass; }
 
 	/** Visits every cell of `grid` that the polar grid informs, once:
-	 * visitUniform(cellIndex) for the cells whose mix is uniformMass(),
-	 * visitMixed(cellIndex, observed) for the others. Cells whose mix is
+	 * visitUniform(firstIndex, count) for runs of cells along a row whose mix
+	 * is uniformMass(), visitMixed(cellIndex, observed) for the others, in
+	 * increasing order of cell index. Cells whose mix is
 	 * vacuous are not visited. A cell touched by a bin with occupied evidence
 	 * gets no free evidence: it holds part of what a beam hit, so that beam
 	 * does not prove it free (without this, walls gather free and occupied
-	 * evidence from scan to scan and turn into conflict). */
+	 * evidence from scan to scan and turn into conflict). Nor does a cell
+	 * between two sectors past the line that joins their nearest impacts:
+	 * where a wall is oblique, the longer sector's free run would otherwise
+	 * reach into the wall behind the shorter one's impact. */
 	template <typename VisitMixed, typename VisitUniform>
 	void forEachInformedCell(
 		const GridGeometry& grid, VisitMixed&& visitMixed,
@@ -191,6 +195,10 @@ class CPolarToCartesian
 		 * range both hold freeMass); negative without a free run. */
 		double freeEnd2;
 		double freeMass;
+		/** Range of the sector's nearest impact less half a bin, +inf without
+		 * one: between two sectors, free evidence stops at the line joining
+		 * their impacts (past it lies the wall they both hit). */
+		double freeLimit;
 	};
 	std::vector<SectorSpan> m_sectorSpans;
 	/** Outlines of the informed and of the uniform regions (x, y pairs), and
@@ -234,11 +242,15 @@ inline bool CPolarToCartesian::mixAt(
 	// Where each sector's two bins hold one constant mass (free run or
 	// vacuous tail: most cells between sectors of different lengths), the mix
 	// is along the angle only, with no range bins to look up.
+	const double limit = (1 - ns.wHi) * lo.freeLimit + ns.wHi * hi.freeLimit;
+	const bool pastImpacts = range2 >= limit * limit;  // false for +inf
 	const bool loFree = range2 < lo.freeEnd2, hiFree = range2 < hi.freeEnd2;
 	if ((loFree || range2 >= lo.reach2) && (hiFree || range2 >= hi.reach2))
 	{
-		const double free = (1 - ns.wHi) * (loFree ? lo.freeMass : 0.0) +
-			ns.wHi * (hiFree ? hi.freeMass : 0.0);
+		const double free = pastImpacts
+			? 0.0
+			: (1 - ns.wHi) * (loFree ? lo.freeMass : 0.0) +
+				ns.wHi * (hiFree ? hi.freeMass : 0.0);
 		observed = Mass::simpleFree(free);
 		return free > 1e-12;
 	}
@@ -254,7 +266,7 @@ inline bool CPolarToCartesian::mixAt(
 		wa * a.occupied + wb * b.occupied + wc * c.occupied + wd * d.occupied,
 		wa * a.unknown + wb * b.unknown + wc * c.unknown + wd * d.unknown};
 	if (observed.unknown >= 1.0 - 1e-12) return false;
-	const bool touchedByImpact =
+	const bool touchedByImpact = pastImpacts ||
 		a.occupied + b.occupied + c.occupied + d.occupied > 0.0;
 	const double freeToUnknown = touchedByImpact ? observed.free : 0.0;
 	observed.unknown += freeToUnknown;
@@ -308,8 +320,10 @@ void CPolarToCartesian::forEachInformedCell(
 				if (u < uEnd && m_uniformSpans.columns[u] <= cx)
 				{
 					const int stop = std::min(end, m_uniformSpans.columns[u + 1]);
-					for (; cx <= stop; ++cx)
-						visitUniform(rowIndex + static_cast<std::size_t>(cx));
+					visitUniform(
+						rowIndex + static_cast<std::size_t>(cx),
+						static_cast<std::size_t>(stop - cx + 1));
+					cx = stop + 1;
 				}
 				else
 				{

@@ -256,6 +256,12 @@ std::optional<TInvalidOption>
 			"conflictHandling", "a known handling", double(conflictHandling)};
 	if (!(growthMargin >= 0.0 && std::isfinite(growthMargin)))
 		return TInvalidOption{"growthMargin", "a finite number >= 0 (m)", growthMargin};
+	if (!(motionWindow > 0.0 && motionWindow <= 1e6))
+		return TInvalidOption{"motionWindow", "in (0, 1e6] (s)", motionWindow};
+	if (!(motionMinConflict > 0.0 && motionMinConflict <= 1.0))
+		return TInvalidOption{"motionMinConflict", "in (0, 1]", motionMinConflict};
+	if (!(motionClearance >= 0.0 && motionClearance <= 10.0))
+		return TInvalidOption{"motionClearance", "in [0, 10] (m)", motionClearance};
 	return std::nullopt;
 }
 
@@ -307,6 +313,9 @@ void CEvidentialGridMap2D::TInsertionOptions::loadFromConfigFile(
 		source, section, "horizontalTolerance", o.horizontalTolerance);
 	detail::readEnum(source, section, "conflictHandling", o.conflictHandling);
 	detail::readDouble(source, section, "growthMargin", o.growthMargin);
+	detail::readDouble(source, section, "motionWindow", o.motionWindow);
+	detail::readDouble(source, section, "motionMinConflict", o.motionMinConflict);
+	detail::readDouble(source, section, "motionClearance", o.motionClearance);
 	// The value in the message is the text of the file, as the user wrote it.
 	detail::throwIfInvalid(source, section, o.firstInvalid());
 	*this = o;
@@ -339,6 +348,12 @@ void CEvidentialGridMap2D::TInsertionOptions::saveToConfigFile(
 			   "Keep, ToUnknown or Normalize");
 	writeValue(target, section, "growthMargin", growthMargin,
 			   "m added when the grid grows");
+	writeValue(target, section, "motionWindow", motionWindow,
+			   "s of data time a motion event stays");
+	writeValue(target, section, "motionMinConflict", motionMinConflict,
+			   "least conflict of one cause for a motion event, (0, 1]");
+	writeValue(target, section, "motionClearance", motionClearance,
+			   "m from static structure below which a change is pose error");
 }
 
 void CEvidentialGridMap2D::TInsertionOptions::dumpToTextStream(

@@ -41,7 +41,7 @@ std::uint8_t toByte(double v)
 }
 
 /** Fills img with one pixel per cell, row 0 holding the largest y;
- * `pixel(mass, out)` writes the channels of one cell. */
+ * `pixel(cellIndex, out)` writes the channels of one cell. */
 template <typename PixelFn>
 void paint(
 	const EvidentialGridStorage& grid, mrpt::img::CImage& img,
@@ -56,7 +56,7 @@ void paint(
 		auto* out = img.ptrLine<std::uint8_t>(static_cast<unsigned>(row));
 		const std::size_t first = g.index(0, g.sizeY - 1 - row);
 		for (int cx = 0; cx < g.sizeX; ++cx, out += channels)
-			pixel(grid.read(first + static_cast<std::size_t>(cx)), out);
+			pixel(first + static_cast<std::size_t>(cx), out);
 	}
 }
 
@@ -91,7 +91,8 @@ void CEvidentialGridMap2D::getAsEvidentialImage(mrpt::img::CImage& img) const
 {
 	// CImage keeps colour pixels in OpenCV's order, blue first: the order its
 	// setPixel(0xRRGGBB), saveToFile and the OpenGL texture upload assume.
-	paint(m_grid, img, mrpt::img::CH_RGB, [](const Mass& m, std::uint8_t* p) {
+	paint(m_grid, img, mrpt::img::CH_RGB, [this](std::size_t idx, std::uint8_t* p) {
+		const Mass m = m_grid.read(idx);
 		p[0] = toByte(m.unknown + m.conflict);
 		p[1] = toByte(m.free + m.conflict);
 		p[2] = toByte(m.occupied + m.conflict);
@@ -100,15 +101,29 @@ void CEvidentialGridMap2D::getAsEvidentialImage(mrpt::img::CImage& img) const
 
 void CEvidentialGridMap2D::getAsBetPImage(mrpt::img::CImage& img) const
 {
-	paint(m_grid, img, mrpt::img::CH_GRAY, [](const Mass& m, std::uint8_t* p) {
-		p[0] = toByte(1.0 - betP(m));
+	paint(m_grid, img, mrpt::img::CH_GRAY, [this](std::size_t idx, std::uint8_t* p) {
+		p[0] = toByte(1.0 - betP(m_grid.read(idx)));
 	});
 }
 
 void CEvidentialGridMap2D::getAsConflictImage(mrpt::img::CImage& img) const
 {
-	paint(m_grid, img, mrpt::img::CH_GRAY, [](const Mass& m, std::uint8_t* p) {
-		p[0] = toByte(m.conflict);
+	paint(m_grid, img, mrpt::img::CH_GRAY, [this](std::size_t idx, std::uint8_t* p) {
+		p[0] = toByte(m_grid.read(idx).conflict);
+	});
+}
+
+void CEvidentialGridMap2D::getAsMotionImage(mrpt::img::CImage& img) const
+{
+	// Blue first, as in getAsEvidentialImage().
+	paint(m_grid, img, mrpt::img::CH_RGB, [this](std::size_t idx, std::uint8_t* p) {
+		switch (motionOf(idx))
+		{
+			case Motion::Appeared: p[0] = 0, p[1] = 128, p[2] = 255; return;
+			case Motion::Disappeared: p[0] = 255, p[1] = 160, p[2] = 0; return;
+			case Motion::None: break;
+		}
+		p[0] = p[1] = p[2] = toByte(1.0 - betP(m_grid.read(idx)));
 	});
 }
 
@@ -193,10 +208,10 @@ void CEvidentialGridMap2D::getVisualizationInto(
 	o.insert(plane);
 }
 
-const std::array<const char*, 3>& CEvidentialGridMap2D::pictureNames()
+const std::array<const char*, 4>& CEvidentialGridMap2D::pictureNames()
 {
-	static const std::array<const char*, 3> names{
-		"evidential.png", "betp.png", "conflict.png"};
+	static const std::array<const char*, 4> names{
+		"evidential.png", "betp.png", "conflict.png", "motion.png"};
 	return names;
 }
 
@@ -209,6 +224,8 @@ void CEvidentialGridMap2D::savePictures(const std::string& prefix) const
 	savePicture(prefix + pictureNames()[1], img);
 	getAsConflictImage(img);
 	savePicture(prefix + pictureNames()[2], img);
+	getAsMotionImage(img);
+	savePicture(prefix + pictureNames()[3], img);
 }
 
 std::string CEvidentialGridMap2D::geometryText(const std::string& indent) const

@@ -8,6 +8,7 @@
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 #include "insert/PolarToCartesian.h"
+#include "insert/ScanImpacts.h"
 #include "map/MapWorkspace.h"
 
 #include <algorithm>
@@ -56,6 +57,9 @@ bool CEvidentialGridMap2D::insertScan(
 	CPolarToCartesian& transform = m_workspace->transform;
 	polar.build(scan, insertionOptions.sourceGridOptions(getResolution()));
 	m_grid.setDecayRate(insertionOptions.decayRate);
+	m_grid.setKeepsConflict(
+		insertionOptions.conflictHandling == ConflictHandling::Keep);
+	m_grid.setEventRetention(insertionOptions.motionWindow);
 	m_grid.beginInsertion(mrpt::Clock::toDouble(scan.timestamp));
 	invalidateLikelihoodCache();
 
@@ -77,17 +81,52 @@ bool CEvidentialGridMap2D::insertScan(
 					 "Shown once.\n";
 	}
 
+	CScanImpacts& impacts = m_workspace->impacts;
+	impacts.build(polar, *sensor, geometry());
+	if (m_grid.keepsConflict())
+		fuseKeepingConflict(impacts);
+	else
+		fuseWithMotion(impacts);
+	return true;
+}
+
+void CEvidentialGridMap2D::fuseKeepingConflict(const CScanImpacts& impacts)
+{
+	CPolarToCartesian& transform = m_workspace->transform;
 	const FusionRule rule = insertionOptions.fusionRule;
 	const ConflictHandling handling = insertionOptions.conflictHandling;
 	const Mass& uniform = transform.uniformMass();
+	auto hits = impacts.cursor();
+	// The uniform runs, cut around the impact cells they hold (near the
+	// sensor a beam may end inside the region its neighbours prove free).
+	const auto forEachRun = [&](std::size_t first, std::size_t count, auto&& run,
+								auto&& single) {
+		const std::size_t end = first + count;
+		while (first < end)
+		{
+			const std::size_t hit = std::min(hits.nextFrom(first), end);
+			if (hit > first) run(first, hit - first);
+			if (hit == end) break;
+			single(hit, withImpact(uniform, hits.occupiedAt(hit)));
+			first = hit + 1;
+		}
+	};
+	const auto mixed = [&](std::size_t idx, const Mass& observed) {
+		const double hit = hits.occupiedAt(idx);
+		return hit > 0.0 ? withImpact(observed, hit) : observed;
+	};
 	const auto conjunctive = [&](auto decays) {
+		const auto single = [&](std::size_t idx, const Mass& observed) {
+			m_grid.fuseConjunctive(idx, observed);
+		};
 		transform.forEachInformedCell(
 			geometry(),
-			[&](std::size_t idx, const Mass& observed) {
-				m_grid.fuseConjunctive(idx, observed);
-			},
-			[&, w = static_cast<float>(uniform.free)](std::size_t idx) {
-				m_grid.fuseSimpleFree<decltype(decays)::value>(idx, w);
+			[&](std::size_t idx, const Mass& observed) { single(idx, mixed(idx, observed)); },
+			[&, w = static_cast<float>(uniform.free)](std::size_t first, std::size_t count) {
+				forEachRun(first, count, [&](std::size_t from, std::size_t n) {
+					for (std::size_t idx = from; idx < from + n; ++idx)
+						m_grid.fuseSimpleFree<decltype(decays)::value, true>(idx, w);
+				}, single);
 			});
 	};
 	if (rule == FusionRule::Conjunctive && handling == ConflictHandling::Keep)
@@ -96,13 +135,17 @@ bool CEvidentialGridMap2D::insertScan(
 			conjunctive(std::true_type());
 		else
 			conjunctive(std::false_type());
+		return;
 	}
-	else
-		transform.forEachInformedCell(
-			geometry(),
-			[&](std::size_t idx, const Mass& observed) {
-				m_grid.fuse(idx, observed, rule, handling);
-			},
-			[&](std::size_t idx) { m_grid.fuse(idx, uniform, rule, handling); });
-	return true;
+	const auto single = [&](std::size_t idx, const Mass& observed) {
+		m_grid.fuse(idx, observed, rule, handling);
+	};
+	transform.forEachInformedCell(
+		geometry(),
+		[&](std::size_t idx, const Mass& observed) { single(idx, mixed(idx, observed)); },
+		[&](std::size_t first, std::size_t count) {
+			forEachRun(first, count, [&](std::size_t from, std::size_t n) {
+				for (std::size_t idx = from; idx < from + n; ++idx) single(idx, uniform);
+			}, single);
+		});
 }

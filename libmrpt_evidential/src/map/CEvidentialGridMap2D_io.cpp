@@ -1,7 +1,7 @@
 /* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
  * CEvidentialGridMap2D: serialization (CSerializable).
  *
- * Layout of version 1, after MRPT's object header (class name, version byte),
+ * Layout of version 2, after MRPT's object header (class name, version byte),
  * every number little-endian:
  *   geometry     f64 xMin, f64 yMin, f64 resolution, i32 sizeX, i32 sizeY
  *   budget       u64 maxCells
@@ -9,19 +9,24 @@
  *                u8 imprecisionProfile, f64 sectorWidth (rad), f64 maxRange,
  *                u8 invalidRangesAsFree, u8 fusionRule, f64 decayRate,
  *                f64 horizontalTolerance (rad), u8 conflictHandling,
- *                f64 growthMargin
+ *                f64 growthMargin, f64 motionWindow, f64 motionMinConflict,
+ *                f64 motionClearance
  *   likelihood   f64 occupiedMass, f64 maxCorrsDistance, f64 sigma, f64 zHit,
  *                f64 zRandom, f64 maxRange, u32 decimation,
  *                u8 unknownAsNeutral
  *   generic      genericMapParams as an MRPT object (its own header/version)
  *   stamps       u32 count N, N x f64 insertion times
- *   storage      u64 insertionCount, f64 decayRate (the storage's)
+ *   storage      u64 insertionCount, f64 decayRate (the storage's),
+ *                u8 keepsConflict
  *   cells        sizeX * sizeY cells, row by row from (0, 0), each
- *                u16 conflict, u16 free, u16 occupied, u16 stamp: the
- *                conflict and the normal part's free and occupied masses
- *                (QuantizedCell)
- * Version 0 had the same layout with m(F) and m(O) themselves in the cells
- * instead of the normal part's; it is read and converted.
+ *                u16 aside, u16 free, u16 occupied, u16 stamp: the conflict
+ *                (keepsConflict) or the motion event, and the normal part's
+ *                free and occupied masses (QuantizedCell)
+ * Version 1 had no motion options and no keepsConflict: its cells always
+ * kept conflict. A file of a map whose conflictHandling is Keep still does;
+ * any other has its conflict (0 but for rounding) dropped. Version 0 had
+ * the layout of version 1 with m(F) and m(O) themselves in the cells
+ * instead of the normal part's. Both are read and converted.
  *   checksum     u64 FNV-1a (64 bit) of every byte above, header excluded
  * Enums are stored as their integer values; booleans as 0 or 1.
  * Reading refuses a budget above 10 x kDefaultMaxCells and a grid of more
@@ -142,7 +147,7 @@ std::uint16_t getU16(const std::uint8_t* p)
 }
 }  // namespace
 
-uint8_t CEvidentialGridMap2D::serializeGetVersion() const { return 1; }
+uint8_t CEvidentialGridMap2D::serializeGetVersion() const { return 2; }
 
 void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 {
@@ -161,7 +166,8 @@ void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 	writeEnum(ar, io.fusionRule);
 	ar << io.decayRate << io.horizontalTolerance;
 	writeEnum(ar, io.conflictHandling);
-	ar << io.growthMargin;
+	ar << io.growthMargin << io.motionWindow << io.motionMinConflict
+	   << io.motionClearance;
 
 	const TLikelihoodOptions& lo = likelihoodOptions;
 	ar << lo.occupiedMass << lo.maxCorrsDistance << lo.sigma << lo.zHit
@@ -173,8 +179,8 @@ void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 	const std::vector<double>& stamps = m_grid.stampTimes();
 	ar << static_cast<std::uint32_t>(stamps.size());
 	for (const double t : stamps) ar << t;
-	ar << static_cast<std::uint64_t>(m_grid.insertionCount())
-	   << m_grid.decayRate();
+	ar << static_cast<std::uint64_t>(m_grid.insertionCount()) << m_grid.decayRate()
+	   << static_cast<std::uint8_t>(m_grid.keepsConflict());
 
 	// Explicit little-endian bytes: independent of the host's byte order and
 	// of the struct's layout.
@@ -188,7 +194,7 @@ void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 		{
 			const QuantizedCell& c = cells[first + i];
 			std::uint8_t* p = &block[i * kBytesPerCell];
-			putU16(p, c.conflict);
+			putU16(p, c.aside);
 			putU16(p + 2, c.free);
 			putU16(p + 4, c.occupied);
 			putU16(p + 6, c.stamp);
@@ -201,7 +207,7 @@ void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 
 void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 {
-	if (version > 1) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+	if (version > 2) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
 
 	// Everything goes into locals: the map changes only once all is read,
 	// checked and validated.
@@ -234,6 +240,7 @@ void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 	ar >> io.decayRate >> io.horizontalTolerance;
 	io.conflictHandling = readEnum<ConflictHandling>(ar, "conflictHandling");
 	ar >> io.growthMargin;
+	if (version >= 2) ar >> io.motionWindow >> io.motionMinConflict >> io.motionClearance;
 
 	TLikelihoodOptions lo;
 	ar >> lo.occupiedMass >> lo.maxCorrsDistance >> lo.sigma >> lo.zHit >>
@@ -245,12 +252,18 @@ void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 	ar >> generic;
 
 	const auto stampCount = ar.ReadAs<std::uint32_t>();
-	if (stampCount < 1 || stampCount > EvidentialGridStorage::kMaxStamps)
+	// Version 1 kept up to 65535 times; the storage rebases such a table.
+	const std::uint32_t maxStamps =
+		version >= 2 ? EvidentialGridStorage::kMaxStamps : 65535;
+	if (stampCount < 1 || stampCount > maxStamps)
 		corrupted(std::to_string(stampCount) + " insertion times");
 	std::vector<double> stamps(stampCount);
 	for (double& t : stamps) ar >> t;
 	const auto insertions = ar.ReadAs<std::uint64_t>();
 	const auto decayRate = ar.ReadAs<double>();
+	const bool keepsConflict = version >= 2
+		? readBool(ar, "keepsConflict")
+		: io.conflictHandling == ConflictHandling::Keep;
 
 	// The cells are allocated as they arrive, beyond a first share that
 	// typical maps fit in: a header that claims a huge grid in a short
@@ -272,15 +285,20 @@ void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 		{
 			const std::uint8_t* p = &block[i * kBytesPerCell];
 			QuantizedCell& c = cells[first + i];
-			c.conflict = getU16(p);
+			c.aside = getU16(p);
 			c.free = getU16(p + 2);
 			c.occupied = getU16(p + 4);
 			c.stamp = getU16(p + 6);
 			if (version == 0)
 			{
-				if (std::uint32_t(c.conflict) + c.free + c.occupied > std::uint32_t(kMassScale))
+				if (std::uint32_t(c.aside) + c.free + c.occupied > std::uint32_t(kMassScale))
 					corrupted("a cell of version 0 holds masses above 1");
 				c = fromVersion0(c);
+			}
+			if (version < 2 && !keepsConflict)
+			{
+				if (!isConsistent(c, true)) corrupted("a cell holds an invalid mass");
+				c = EvidentialGridStorage::withoutConflict(c);
 			}
 		}
 	}
@@ -306,7 +324,7 @@ void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 	{
 		grid.assign(
 			g, std::move(cells), std::move(stamps),
-			static_cast<std::size_t>(insertions), decayRate);
+			static_cast<std::size_t>(insertions), decayRate, keepsConflict);
 	}
 	catch (const std::invalid_argument& e)
 	{

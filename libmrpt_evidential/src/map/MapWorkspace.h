@@ -8,7 +8,9 @@
 #include <memory>
 #include <mutex>
 
+#include "insert/MotionDetector.h"
 #include "insert/PolarToCartesian.h"
+#include "insert/ScanImpacts.h"
 
 namespace mrpt_evidential
 {
@@ -17,6 +19,8 @@ struct CEvidentialGridMap2D::TWorkspace
 	/** Insertion's scratch space, kept to avoid allocations. */
 	CPolarSourceGrid sourceGrid;
 	CPolarToCartesian transform;
+	CScanImpacts impacts;
+	CMotionDetector motion;
 	/** The likelihood field, or null until a likelihood needs it. The mutex
 	 * guards the pointer: readers of the map may race to build it. */
 	std::mutex likelihoodMutex;

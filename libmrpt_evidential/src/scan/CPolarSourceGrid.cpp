@@ -130,6 +130,11 @@ void CPolarSourceGrid::build(
 	}
 }
 
+std::size_t CPolarSourceGrid::binOfRange(double r) const
+{
+	return detail::binOf(r, m_binSize, m_binCount);
+}
+
 Mass CPolarSourceGrid::at(std::size_t sector, std::size_t bin) const
 {
 	if (sector >= m_sectorCount)

@@ -5,10 +5,22 @@
 
 #include <mrpt_evidential/scan/SensorModel.h>
 
+#include <cstddef>
 #include <vector>
 
 namespace mrpt_evidential::detail
 {
+/** Index of the bin holding range r, or nBins when r lies beyond the last
+ * bin (+inf included). A range within a billionth of a bin below an edge
+ * counts in the upper bin: 4.0 / 0.05 is 79.99999999999999 in binary, yet 4 m
+ * lies in the bin that starts at 4 m. Compared as doubles so that huge ranges
+ * never overflow the conversion. */
+inline std::size_t binOf(double r, double binSize, std::size_t nBins)
+{
+	const double x = r / binSize + 1e-9;
+	return x < static_cast<double>(nBins) ? static_cast<std::size_t>(x) : nBins;
+}
+
 /** Writes the row of a sector whose arguments are already checked and whose
  * impact ranges are sorted in increasing order: its leading free bins as a
  * count and one mass, and the bins past them that may hold evidence as runs

@@ -46,17 +46,6 @@ void checkArguments(
 				std::to_string(impactRanges[i]));
 }
 
-/** Index of the bin holding range r, or nBins when r lies beyond the last
- * bin (+inf included). A range within a billionth of a bin below an edge
- * counts in the upper bin: 4.0 / 0.05 is 79.99999999999999 in binary, yet 4 m
- * lies in the bin that starts at 4 m. Compared as doubles so that huge ranges
- * never overflow the conversion. */
-std::size_t binOf(double r, double binSize, std::size_t nBins)
-{
-	const double x = r / binSize + 1e-9;
-	return x < static_cast<double>(nBins) ? static_cast<std::size_t>(x) : nBins;
-}
-
 /** The bins an impact gives occupied evidence to, [first, last] inclusive;
  * first == nBins when they all lie beyond the grid. For the imprecise model
  * these are the bins whose centre lies within d of the impact, plus the bin
@@ -71,7 +60,7 @@ struct Band
 Band occupiedBand(
 	const SensorModelParams& p, double r, double binSize, std::size_t nBins)
 {
-	const std::size_t own = binOf(r, binSize, nBins);
+	const std::size_t own = detail::binOf(r, binSize, nBins);
 	if (p.model != SensorModel::ImpreciseMultiEcho || p.imprecision == 0.0 ||
 		!std::isfinite(r))
 		return {own, own, own};

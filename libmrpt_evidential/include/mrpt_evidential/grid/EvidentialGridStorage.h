@@ -15,23 +15,36 @@
 
 namespace mrpt_evidential
 {
-/** The cells of an evidential grid with their decay.
+/** The cells of an evidential grid with their decay and motion events.
  *
  * Decay is classical discounting with rate 1 - exp(-decayRate dt) after dt
  * seconds of data time. It is applied lazily: every cell carries the stamp of
  * the insertion that last wrote it, and reading a cell discounts it from that
  * stamp's time to the latest insertion's time. The cost of an insertion
  * therefore depends on the cells it writes, not on the size of the grid.
- * Once in a long while (65535 distinct insertion times, or exp(decayRate dt)
- * about to lose precision) every cell is decayed to the present and the
- * stamps start again: O(cells), amortized over thousands of insertions. */
+ * Once in a long while (kMaxStamps distinct insertion times, or
+ * exp(decayRate dt) about to lose precision) every cell is decayed to the
+ * present and the stamps start again: O(cells), amortized over thousands of
+ * insertions.
+ *
+ * A grid either keeps conflict (keepsConflict(): each cell's m(empty) grows
+ * with every conflicting fusion) or keeps none: then every fusion's conflict
+ * leaves the cell, no cell is ever surer than kMaxCertainty of one
+ * hypothesis (so that evidence against it can always win), and each cell
+ * remembers its latest motion event instead (CellEvent), with its time. */
 class EvidentialGridStorage
 {
    public:
-	/** Largest number of insertion times before the stamps are rebased. */
-	static constexpr std::size_t kMaxStamps = 65535;
+	/** Largest number of insertion times before the stamps are rebased (an
+	 * event keeps its stamp in 14 bits). */
+	static constexpr std::size_t kMaxStamps = 16383;
+	/** Largest m(F) or m(O) of a cell of a grid without conflict: a parked
+	 * car seen for an hour is forgotten after some six free scans, as after a
+	 * minute. */
+	static constexpr double kMaxCertainty = 0.999;
 
-	/** An empty (0 x 0) grid of resolution 0.1 m with no decay. */
+	/** An empty (0 x 0) grid of resolution 0.1 m with no decay, keeping
+	 * conflict. */
 	EvidentialGridStorage() = default;
 
 	/** Discards every cell and sets the geometry to cover [xMin, xMax] x
@@ -61,6 +74,20 @@ class EvidentialGridStorage
 	void setDecayRate(double perSecond);
 	double decayRate() const { return m_decayRate; }
 
+	/** Whether cells keep conflict. Changing it clears every cell's aside
+	 * word: the conflict of a grid that kept it (the normal parts stay: they
+	 * are the masses with the conflict normalized away), or the events. */
+	void setKeepsConflict(bool keeps);
+	bool keepsConflict() const { return m_keepsConflict; }
+	/** A cell of a grid that keeps conflict as a grid without conflict
+	 * holds it: no event, and the normal part capped at kMaxCertainty. */
+	static QuantizedCell withoutConflict(QuantizedCell c);
+	/** Events are remembered at least this long, seconds, >= 0 (the stamps
+	 * of older ones may be dropped when the stamps are rebased). Events
+	 * older than 100 / decayRate seconds or 8191 insertion times may be
+	 * dropped too. \throws std::invalid_argument if negative or NaN. */
+	void setEventRetention(double seconds);
+
 	/** Starts an insertion at data time t (seconds, any origin). A time
 	 * before the latest one is taken as the latest: data that go back in time
 	 * never undo decay. The first insertion after reset() sets the origin.
@@ -71,16 +98,27 @@ class EvidentialGridStorage
 	/** Number of insertions since reset(). */
 	std::size_t insertionCount() const { return m_insertions; }
 
-	/** The mass of a cell as decayed to latestTime(). idx < cellCount(). */
+	/** The mass of a cell as decayed to latestTime() (m(empty) = 0 in a grid
+	 * without conflict). idx < cellCount(). */
 	Mass read(std::size_t idx) const
 	{
-		return decayed(m_cells[idx], decayFactor(m_cells[idx].stamp));
+		const QuantizedCell& c = m_cells[idx];
+		return decayed(m_keepsConflict ? decodeMass(c) : decodeNormal(c), decayFactor(c.stamp));
 	}
-	/** Stores m in a cell, stamped with the current insertion. */
+	/** Stores m in a cell, stamped with the current insertion; in a grid
+	 * without conflict, m normalized and capped at kMaxCertainty (the event
+	 * stays). */
 	void write(std::size_t idx, const Mass& m)
 	{
 		QuantizedCell& c = m_cells[idx];
-		encodeMass(m, c);
+		if (m_keepsConflict)
+			encodeMass(m, c);
+		else
+		{
+			encodeNormal(m, c);
+			c.free = std::min<std::uint16_t>(c.free, m_ceiling);
+			c.occupied = std::min<std::uint16_t>(c.occupied, m_ceiling);
+		}
 		c.stamp = m_currentStamp;
 	}
 
@@ -90,46 +128,72 @@ class EvidentialGridStorage
 	 * insertion, so that a cell is always decayed exactly once for the time
 	 * it spent unchanged. Fuse a cell at most once per insertion.
 	 * @{ */
-	/** With any rule and conflict handling: read, combine, write. */
-	void fuse(
+	/** With any rule and conflict handling: read, combine, write. Returns
+	 * the fusion's conflict split. */
+	ConflictSplit fuse(
 		std::size_t idx, const Mass& observed, FusionRule rule,
 		ConflictHandling handling)
 	{
-		write(idx, handleConflict(combine(rule, read(idx), observed), handling));
+		const Mass before = read(idx);
+		write(idx, handleConflict(combine(rule, before, observed), handling));
+		return splitConflict(before, observed);
 	}
-	/** The conjunctive rule keeping the conflict (the default), computed on
-	 * the stored values: fuse() without its generality. In the stored form
-	 * the conjunctive rule is Dempster's rule on the normal parts, and
-	 * 1 - K multiplies by 1 - (the conflict of that fusion). */
+	/** The conjunctive rule keeping the conflict (a grid that keeps
+	 * conflict), computed on the stored values: fuse() without its
+	 * generality. In the stored form the conjunctive rule is Dempster's rule
+	 * on the normal parts, and 1 - K multiplies by 1 - (the conflict of that
+	 * fusion). */
 	void fuseConjunctive(std::size_t idx, const Mass& observed)
 	{
 		QuantizedCell& c = m_cells[idx];
 		double f, o, keep;
 		decayedNormal(c, f, o, keep);
-		const double u = kMassScale - f - o;
-		// The observation's normal part and conflict.
+		double of, oo, ou;
+		normalPart(observed, of, oo, ou);
 		const double observedKeep = 1.0 - observed.conflict;
-		const double toNormal = observedKeep > 0.0 ? 1.0 / observedKeep : 0.0;
-		const double of = observed.free * toNormal,
-					 oo = observed.occupied * toNormal, ou = 1.0 - of - oo;
 		const double newConflict = (f * oo + o * of) / kMassScale;
 		// At total conflict both products are 0 and n becomes vacuous.
 		const double normalize = 1.0 / std::max(1.0 - newConflict, 1e-300);
 		encodeScaled(
 			c, kMassScale * (1.0 - keep * observedKeep * (1.0 - newConflict)),
-			(f * (of + ou) + u * of) * normalize, (o * (oo + ou) + u * oo) * normalize);
+			(f * (of + ou) + (kMassScale - f - o) * of) * normalize,
+			(o * (oo + ou) + (kMassScale - f - o) * oo) * normalize);
 		c.stamp = m_currentStamp;
 	}
-	/** fuseConjunctive() with the simple free mass m(F) = w, the mass of the
-	 * bulk of a scan's cells, in single precision (the compiler runs it on
-	 * four cells at once): a float holds a stored value to 1/256 of a step.
-	 * `Decays` false skips the decay, for grids whose decay rate is 0. */
-	template <bool Decays>
+	/** Dempster's rule on the stored values of a grid without conflict (the
+	 * conjunctive rule with the conflict normalized away, which is
+	 * ConflictHandling::Normalize): fuse() without its generality. Returns
+	 * the fusion's conflict split. */
+	ConflictSplit fuseNormalized(std::size_t idx, const Mass& observed)
+	{
+		QuantizedCell& c = m_cells[idx];
+		double f, o, keep;
+		decayedNormal(c, f, o, keep);
+		double of, oo, ou;
+		normalPart(observed, of, oo, ou);
+		const double u = kMassScale - f - o;
+		const ConflictSplit split{f * oo / kMassScale, o * of / kMassScale};
+		const double normalize =
+			1.0 / std::max(1.0 - split.appeared - split.disappeared, 1e-300);
+		encodeScaledNormal(
+			c, (f * (of + ou) + u * of) * normalize,
+			(o * (oo + ou) + u * oo) * normalize, m_ceiling);
+		c.stamp = m_currentStamp;
+		return split;
+	}
+	/** The simple free mass m(F) = w, the mass of the bulk of a scan's
+	 * cells, in single precision (the compiler runs it on four cells at
+	 * once): a float holds a stored value to 1/256 of a step. fuseConjunctive()
+	 * in a grid that keeps conflict, fuseNormalized() in one that does not:
+	 * `KeepsConflict` must be keepsConflict(). `Decays` false skips the
+	 * decay, for grids whose decay rate is 0. */
+	template <bool Decays, bool KeepsConflict>
 	void fuseSimpleFree(std::size_t idx, float w)
 	{
 		QuantizedCell& c = m_cells[idx];
 		const float scale = static_cast<float>(kMassScale);
-		float f = c.free, o = c.occupied, keep = 1.0f - c.conflict / scale;
+		float f = c.free, o = c.occupied;
+		float keep = KeepsConflict ? 1.0f - c.aside / scale : 1.0f;
 		if constexpr (Decays)
 		{
 			// Decay moves the share 1 - d of each mass to Omega: the conflict
@@ -145,10 +209,50 @@ class EvidentialGridStorage
 		const float newConflict = o * w / scale;
 		// At total conflict both products are 0 and n becomes vacuous.
 		const float normalize = 1.0f / std::max(1.0f - newConflict, 1e-30f);
-		encodeScaled(
-			c, scale * (1.0f - keep * (1.0f - newConflict)), (f + u * w) * normalize,
-			(o - o * w) * normalize);
+		if constexpr (KeepsConflict)
+			encodeScaled(
+				c, scale * (1.0f - keep * (1.0f - newConflict)), (f + u * w) * normalize,
+				(o - o * w) * normalize);
+		else
+			encodeScaledNormal(c, (f + u * w) * normalize, (o - o * w) * normalize, m_ceiling);
 		c.stamp = m_currentStamp;
+	}
+	/** True when no cell of [first, first + count) has an event or a stored
+	 * n(O) of `occupiedBelow` or more: free evidence then finds nothing
+	 * there for the motion layer (decay only lowers n(O)). */
+	bool isQuietRun(std::size_t first, std::size_t count, std::uint16_t occupiedBelow) const
+	{
+		unsigned loud = 0;
+		for (std::size_t i = first; i < first + count; ++i)
+			loud |= static_cast<unsigned>(m_cells[i].occupied >= occupiedBelow) |
+				static_cast<unsigned>(m_cells[i].aside != 0);
+		return loud == 0;
+	}
+	/** @} */
+
+	/** @name Motion events (grids without conflict; CellEvent::None
+	 * otherwise)
+	 * @{ */
+	CellEvent event(std::size_t idx) const
+	{
+		return m_keepsConflict ? CellEvent::None : eventOf(m_cells[idx]);
+	}
+	/** Data time of the cell's event (meaningless for CellEvent::None). */
+	double eventTime(std::size_t idx) const
+	{
+		return m_stampTimes[eventStampOf(m_cells[idx])];
+	}
+	/** Sets the cell's event, at the current insertion's time. */
+	void setEvent(std::size_t idx, CellEvent e)
+	{
+		if (!m_keepsConflict) m_cells[idx].aside = packEvent(e, m_currentStamp);
+	}
+	/** Sets the cell's event, keeping the time of the one it had (a leaving
+	 * cell's disappearance dates from when it was first seen free). */
+	void setEventKeepingTime(std::size_t idx, CellEvent e)
+	{
+		QuantizedCell& c = m_cells[idx];
+		if (!m_keepsConflict) c.aside = packEvent(e, eventStampOf(c));
 	}
 	/** @} */
 
@@ -156,7 +260,8 @@ class EvidentialGridStorage
 	const std::vector<QuantizedCell>& cells() const { return m_cells; }
 	const std::vector<double>& stampTimes() const { return m_stampTimes; }
 
-	/** Replaces the whole state with one read from a file.
+	/** Replaces the whole state with one read from a file. A table of more
+	 * than kMaxStamps times (files of version 1 allowed 65535) is rebased.
 	 * \throws std::invalid_argument if the pieces do not fit together (a
 	 *  geometry beyond the limits, cell count against geometry, a stamp
 	 *  without a time, masses above 1, times that go backwards, several
@@ -164,17 +269,25 @@ class EvidentialGridStorage
 	void assign(
 		const GridGeometry& geometry, std::vector<QuantizedCell> cells,
 		std::vector<double> stampTimes, std::size_t insertions,
-		double decayRate);
+		double decayRate, bool keepsConflict);
 
    private:
-	/** A stored mass discounted by a decay factor. */
-	static Mass decayed(const QuantizedCell& c, double factor)
+	/** A mass discounted by a decay factor. */
+	static Mass decayed(const Mass& m, double factor)
 	{
-		Mass m = decodeMass(c);
 		if (factor >= 1.0) return m;
 		return {
 			m.conflict * factor, m.free * factor, m.occupied * factor,
 			m.unknown * factor + (1.0 - factor)};
+	}
+	/** The normal part of an observed mass (vacuous at total conflict). */
+	static void normalPart(const Mass& m, double& f, double& o, double& u)
+	{
+		const double keep = 1.0 - m.conflict;
+		const double toNormal = keep > 0.0 ? 1.0 / keep : 0.0;
+		f = m.free * toNormal;
+		o = m.occupied * toNormal;
+		u = 1.0 - f - o;
 	}
 
 	/** The normal part of a cell decayed to latestTime(), in stored units
@@ -183,7 +296,8 @@ class EvidentialGridStorage
 	 * s = d (1 - K) / (1 - d K) of its evidence. */
 	void decayedNormal(const QuantizedCell& c, double& f, double& o, double& keep) const
 	{
-		const double d = decayFactor(c.stamp), k = c.conflict / kMassScale;
+		const double d = decayFactor(c.stamp);
+		const double k = m_keepsConflict ? c.aside / kMassScale : 0.0;
 		keep = 1.0 - d * k;
 		const double s = d * (1.0 - k) / keep;
 		f = c.free * s;
@@ -197,17 +311,22 @@ class EvidentialGridStorage
 		return m_presentGain * m_stampGain[stamp];
 	}
 	/** Decays every cell to time `to` (>= every stamp's time) and makes it
-	 * the only stamp. */
+	 * the stamp of every cell; the times of recent events stay. */
 	void rebaseStamps(double to);
 	void updateGains();
 
 	GridGeometry m_geometry;
 	std::vector<QuantizedCell> m_cells;
 	double m_decayRate = 0.0;
-	/** Time of each stamp; stamp 0 is the time origin. Never empty. */
+	bool m_keepsConflict = true;
+	double m_eventRetention = 0.0;
+	/** kMaxCertainty in stored units, or the scale itself when the grid
+	 * keeps conflict. */
+	std::uint16_t m_ceiling = static_cast<std::uint16_t>(kMassScale);
+	/** Time of each stamp; stamp 0 is the oldest. Never empty. */
 	std::vector<double> m_stampTimes{0.0};
-	/** exp(decayRate (time of stamp - origin)) and exp(-decayRate (latest -
-	 * origin)): their product is a stamp's decay factor, one multiplication
+	/** exp(decayRate (time of stamp - oldest)) and exp(-decayRate (latest -
+	 * oldest)): their product is a stamp's decay factor, one multiplication
 	 * per cell read instead of an exp. */
 	std::vector<double> m_stampGain{1.0};
 	double m_presentGain = 1.0;

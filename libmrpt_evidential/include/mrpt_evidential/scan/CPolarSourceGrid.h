@@ -96,6 +96,11 @@ class CPolarSourceGrid
 	std::size_t freeBins(std::size_t s) const { return m_layouts.at(s).freeBins; }
 	/** m(F) of the leading free bins of sector s (0 when it has none). */
 	double freeMass(std::size_t s) const { return m_layouts.at(s).freeMass; }
+	/** The ranges of sector s's impacts, sorted (+inf for a beam without
+	 * return read as free). */
+	const std::vector<double>& impacts(std::size_t s) const { return m_impacts.at(s); }
+	/** Index of the bin holding range r (binCount() beyond the last). */
+	std::size_t binOfRange(double r) const;
 	/** The largest informedBins() of all sectors. */
 	std::size_t maxInformedBins() const { return m_maxInformedBins; }
 

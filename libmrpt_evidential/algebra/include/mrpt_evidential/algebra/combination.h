@@ -211,7 +211,7 @@ inline Mass combine(FusionRule rule, const Mass& a, const Mass& b) noexcept
  * how much there is; this decides whether the result keeps it). */
 enum class ConflictHandling
 {
-	/** The result keeps it: conflict marks change (something moved), and
+	/** The result keeps it, fusion after fusion: conflict marks change, and
 	 * decay fades it like any other evidence. */
 	Keep,
 	/** It becomes ignorance (conflictToUnknown()). */
@@ -220,6 +220,22 @@ enum class ConflictHandling
 	 * rule does. */
 	Normalize
 };
+
+/** The conflict of a conjunctive fusion of what a cell held `before` with
+ * what a sensor `observed`, split by its cause (Moras, Cherfaoui and
+ * Bonnifait): seen free before and occupied now (something appeared), or
+ * the other way round (something left). For masses without conflict the two
+ * sum to conjunctive(before, observed).conflict. */
+struct ConflictSplit
+{
+	double appeared = 0.0;  //!< before(F) observed(O)
+	double disappeared = 0.0;  //!< before(O) observed(F)
+};
+
+inline ConflictSplit splitConflict(const Mass& before, const Mass& observed) noexcept
+{
+	return {before.free * observed.occupied, before.occupied * observed.free};
+}
 
 /** A fused mass after the conflict handling. Never throws. */
 inline Mass handleConflict(const Mass& m, ConflictHandling handling) noexcept

@@ -1,0 +1,73 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT. */
+
+#include "insert/MotionDetector.h"
+
+#include <algorithm>
+
+namespace mrpt_evidential
+{
+namespace
+{
+bool leansOccupied(const Mass& m) { return m.occupied > m.free && m.occupied >= 0.5; }
+}  // namespace
+
+void CMotionDetector::afterFusionOfEventCell(
+	EvidentialGridStorage& grid, std::size_t idx, CellEvent e, const Mass& observed)
+{
+	const bool seenFree = observed.free > observed.occupied;
+	const bool seenOccupied = observed.occupied > observed.free;
+	if ((e == CellEvent::Appeared || e == CellEvent::Leaving) && seenFree)
+		m_candidates.push_back({idx, CellEvent::Disappeared});
+	else if (e == CellEvent::Disappeared && seenOccupied)
+		m_candidates.push_back({idx, CellEvent::Appeared});
+	else if (e == CellEvent::Leaving && seenOccupied)
+		grid.setEvent(idx, CellEvent::None);
+}
+
+bool CMotionDetector::nearStaticStructure(
+	const EvidentialGridStorage& grid, std::size_t idx) const
+{
+	const GridGeometry& g = grid.geometry();
+	const int cx = static_cast<int>(idx % static_cast<std::size_t>(g.sizeX));
+	const int cy = static_cast<int>(idx / static_cast<std::size_t>(g.sizeX));
+	const int r = m_rules.clearanceCells;
+	for (int y = std::max(0, cy - r); y <= std::min(g.sizeY - 1, cy + r); ++y)
+		for (int x = std::max(0, cx - r); x <= std::min(g.sizeX - 1, cx + r); ++x)
+		{
+			const std::size_t n = g.index(x, y);
+			if (n == idx || !leansOccupied(grid.read(n))) continue;
+			const CellEvent e = grid.event(n);
+			const bool moving = e == CellEvent::Leaving ||
+				(e == CellEvent::Appeared && isRecent(grid, n));
+			if (!moving) return true;
+		}
+	return false;
+}
+
+void CMotionDetector::settle(EvidentialGridStorage& grid) const
+{
+	for (const TCandidate& c : m_candidates)
+	{
+		const CellEvent before = grid.event(c.index);
+		if (c.event == CellEvent::Appeared)
+		{
+			if (!nearStaticStructure(grid, c.index))
+				grid.setEvent(c.index, CellEvent::Appeared);
+			continue;
+		}
+		if (leansOccupied(grid.read(c.index)))
+		{
+			// Evidence still says occupied: remember when this began.
+			if (before != CellEvent::Leaving) grid.setEvent(c.index, CellEvent::Leaving);
+			continue;
+		}
+		if (nearStaticStructure(grid, c.index))
+			grid.setEvent(c.index, CellEvent::None);
+		else if (before == CellEvent::Leaving)
+			grid.setEventKeepingTime(c.index, CellEvent::Disappeared);
+		else
+			grid.setEvent(c.index, CellEvent::Disappeared);
+	}
+}
+
+}  // namespace mrpt_evidential

@@ -1,0 +1,46 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT. */
+
+#include "insert/ScanImpacts.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mrpt_evidential
+{
+void CScanImpacts::build(
+	const CPolarSourceGrid& polar, const PlanarSensorPose& sensor,
+	const GridGeometry& grid)
+{
+	m_cells.clear();
+	const double dir = sensor.mirrored ? -1.0 : 1.0;
+	const double reach = static_cast<double>(polar.binCount()) * polar.binSize();
+	for (std::size_t s = 0; s < polar.sectorCount(); ++s)
+	{
+		const std::vector<double>& ranges = polar.impacts(s);
+		if (ranges.empty() || !(ranges.front() < reach)) continue;
+		const double a = sensor.yaw + dir * polar.sectorAngle(s);
+		const double c = std::cos(a), sn = std::sin(a);
+		for (const double r : ranges)
+		{
+			if (!(r < reach)) break;  // sorted: the rest lie beyond too
+			const double occupied = polar.massAt(s, polar.binOfRange(r)).occupied;
+			if (!(occupied > 0.0)) continue;
+			const double x = sensor.x + r * c, y = sensor.y + r * sn;
+			const double fx = std::floor((x - grid.xMin) / grid.resolution);
+			const double fy = std::floor((y - grid.yMin) / grid.resolution);
+			if (!(fx >= 0 && fy >= 0 && fx < grid.sizeX && fy < grid.sizeY)) continue;
+			m_cells.push_back(
+				{grid.index(static_cast<int>(fx), static_cast<int>(fy)), occupied});
+		}
+	}
+	std::sort(m_cells.begin(), m_cells.end(), [](const auto& a, const auto& b) {
+		return a.index < b.index || (a.index == b.index && a.occupied > b.occupied);
+	});
+	m_cells.erase(
+		std::unique(
+			m_cells.begin(), m_cells.end(),
+			[](const auto& a, const auto& b) { return a.index == b.index; }),
+		m_cells.end());
+}
+
+}  // namespace mrpt_evidential

@@ -1,0 +1,82 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
+ * The grid cells that hold a scan's impacts. */
+#pragma once
+
+#include <mrpt_evidential/grid/GridGeometry.h>
+#include <mrpt_evidential/scan/CPolarSourceGrid.h>
+
+#include <cstddef>
+#include <vector>
+
+#include "insert/PolarToCartesian.h"
+
+namespace mrpt_evidential
+{
+/** The cells of a grid that hold at least one impact of a scan, each with
+ * the largest occupied mass its impacts' bins carry.
+ *
+ * The bilinear mix samples the polar grid at cell centres only. Where
+ * sectors are narrower than cells (near the sensor), a cell that a beam ends
+ * in may sit between two other beams that reach past it, and would read
+ * free; where the wall is oblique, the cell at its surface mixes a free bin
+ * with an occupied one. The cells listed here read the impact's occupied
+ * evidence instead, whatever the mix (as COccupancyGridMap2D marks the cell
+ * a beam ends in). An impact lies along its sector's centre line, where the
+ * polar grid puts it. */
+class CScanImpacts
+{
+   public:
+	struct TImpactCell
+	{
+		std::size_t index;
+		double occupied;
+	};
+
+	/** Lists the impact cells of `polar` placed at `sensor` in `grid`,
+	 * sorted by index. Impacts outside the grid are left out. */
+	void build(
+		const CPolarSourceGrid& polar, const PlanarSensorPose& sensor,
+		const GridGeometry& grid);
+
+	const std::vector<TImpactCell>& cells() const { return m_cells; }
+
+	/** Walks the list along increasing cell indices, as the transform visits
+	 * cells: each call's index must be >= the previous one's. */
+	class CCursor
+	{
+	   public:
+		explicit CCursor(const std::vector<TImpactCell>& cells)
+			: m_it(cells.begin()), m_end(cells.end())
+		{
+		}
+		/** The occupied mass of the impacts in cell idx, 0 if it holds none. */
+		double occupiedAt(std::size_t idx)
+		{
+			while (m_it != m_end && m_it->index < idx) ++m_it;
+			return m_it != m_end && m_it->index == idx ? m_it->occupied : 0.0;
+		}
+		/** The index of the first impact cell at or after idx, or SIZE_MAX. */
+		std::size_t nextFrom(std::size_t idx)
+		{
+			while (m_it != m_end && m_it->index < idx) ++m_it;
+			return m_it != m_end ? m_it->index : static_cast<std::size_t>(-1);
+		}
+
+	   private:
+		std::vector<TImpactCell>::const_iterator m_it, m_end;
+	};
+	CCursor cursor() const { return CCursor(m_cells); }
+
+   private:
+	std::vector<TImpactCell> m_cells;
+};
+
+/** The observed mass of a cell that holds impacts: the mix with its free
+ * evidence taken away and its occupied evidence raised to the impacts'. */
+inline Mass withImpact(Mass observed, double impactOccupied)
+{
+	const double occupied = std::max(observed.occupied, impactOccupied);
+	return {observed.conflict, 0.0, occupied, 1.0 - observed.conflict - occupied};
+}
+
+}  // namespace mrpt_evidential

@@ -1,0 +1,162 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
+ * CEvidentialGridMap2D: the motion layer (fusion without conflict, and what
+ * the layer reads). */
+
+#include <mrpt_evidential/CEvidentialGridMap2D.h>
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <type_traits>
+
+#include "insert/MotionDetector.h"
+#include "insert/PolarToCartesian.h"
+#include "insert/ScanImpacts.h"
+#include "map/MapWorkspace.h"
+
+using namespace mrpt_evidential;
+
+void CEvidentialGridMap2D::fuseWithMotion(const CScanImpacts& impacts)
+{
+	const TInsertionOptions& io = insertionOptions;
+	CPolarToCartesian& transform = m_workspace->transform;
+	CMotionDetector& motion = m_workspace->motion;
+	motion.begin(
+		{io.motionMinConflict,
+		 static_cast<int>(std::floor(io.motionClearance / getResolution() + 0.5)),
+		 io.motionWindow});
+	const FusionRule rule = io.fusionRule;
+	const ConflictHandling handling = io.conflictHandling;
+	// Dempster's rule, however it is asked for, has a kernel of its own.
+	const bool dempster = rule == FusionRule::Dempster ||
+		(rule == FusionRule::Conjunctive && handling == ConflictHandling::Normalize);
+	const Mass& uniform = transform.uniformMass();
+	auto hits = impacts.cursor();
+
+	const auto single = [&](std::size_t idx, const Mass& observed) {
+		const ConflictSplit split = dempster
+			? m_grid.fuseNormalized(idx, observed)
+			: m_grid.fuse(idx, observed, rule, handling);
+		motion.afterFusion(m_grid, idx, split, observed);
+	};
+	// A run of the free mass w finds an event only in a cell that already
+	// has one, or whose n(O) w reaches motionMinConflict.
+	const double w = uniform.free;
+	const double suspect =
+		std::min(std::ceil(io.motionMinConflict / std::max(w, 1e-9) * kMassScale), kMassScale);
+	const auto occupiedBelow = static_cast<std::uint16_t>(suspect);
+	const auto fuseRun = [&](auto decays, std::size_t first, std::size_t count) {
+		if (dempster && m_grid.isQuietRun(first, count, occupiedBelow))
+			for (std::size_t idx = first; idx < first + count; ++idx)
+				m_grid.fuseSimpleFree<decltype(decays)::value, false>(
+					idx, static_cast<float>(w));
+		else
+			for (std::size_t idx = first; idx < first + count; ++idx) single(idx, uniform);
+	};
+	const auto fuseAll = [&](auto decays) {
+		transform.forEachInformedCell(
+			geometry(),
+			[&](std::size_t idx, const Mass& observed) {
+				const double hit = hits.occupiedAt(idx);
+				single(idx, hit > 0.0 ? withImpact(observed, hit) : observed);
+			},
+			[&](std::size_t first, std::size_t count) {
+				// Cut around the impact cells the run holds.
+				const std::size_t end = first + count;
+				while (first < end)
+				{
+					const std::size_t hit = std::min(hits.nextFrom(first), end);
+					if (hit > first) fuseRun(decays, first, hit - first);
+					if (hit == end) break;
+					single(hit, withImpact(uniform, hits.occupiedAt(hit)));
+					first = hit + 1;
+				}
+			});
+	};
+	if (m_grid.decayRate() > 0.0)
+		fuseAll(std::true_type());
+	else
+		fuseAll(std::false_type());
+	motion.settle(m_grid);
+}
+
+Motion CEvidentialGridMap2D::motionOf(std::size_t idx) const
+{
+	const CellEvent e = m_grid.event(idx);
+	if (e != CellEvent::Appeared && e != CellEvent::Disappeared) return Motion::None;
+	if (latestTime() - m_grid.eventTime(idx) > insertionOptions.motionWindow)
+		return Motion::None;
+	return e == CellEvent::Appeared ? Motion::Appeared : Motion::Disappeared;
+}
+
+Motion CEvidentialGridMap2D::getCellMotionByIndex(int cx, int cy) const
+{
+	if (!geometry().inside(cx, cy)) return Motion::None;
+	return motionOf(geometry().index(cx, cy));
+}
+
+namespace
+{
+/** The cell holding (x, y), or nothing outside the grid (NaN included). */
+std::optional<std::size_t> cellHolding(const GridGeometry& g, double x, double y)
+{
+	if (!(x >= g.xMin && x < g.xMax() && y >= g.yMin && y < g.yMax()))
+		return std::nullopt;
+	const int cx = g.cellX(x), cy = g.cellY(y);
+	if (!g.inside(cx, cy)) return std::nullopt;
+	return g.index(cx, cy);
+}
+}  // namespace
+
+Motion CEvidentialGridMap2D::getCellMotion(double x, double y) const
+{
+	const auto idx = cellHolding(geometry(), x, y);
+	return idx ? motionOf(*idx) : Motion::None;
+}
+
+double CEvidentialGridMap2D::getCellMotionTime(double x, double y) const
+{
+	const auto idx = cellHolding(geometry(), x, y);
+	if (!idx || motionOf(*idx) == Motion::None)
+		return std::numeric_limits<double>::quiet_NaN();
+	return m_grid.eventTime(*idx);
+}
+
+CEvidentialGridMap2D::TMotionCounts CEvidentialGridMap2D::countMotion() const
+{
+	TMotionCounts counts;
+	const std::size_t n = geometry().cellCount();
+	for (std::size_t idx = 0; idx < n; ++idx)
+	{
+		const Motion m = motionOf(idx);
+		counts.appeared += m == Motion::Appeared;
+		counts.disappeared += m == Motion::Disappeared;
+	}
+	return counts;
+}
+
+namespace
+{
+std::vector<std::pair<double, double>> centresOf(
+	const CEvidentialGridMap2D& map, Motion wanted)
+{
+	std::vector<std::pair<double, double>> centres;
+	const GridGeometry& g = map.geometry();
+	for (int cy = 0; cy < g.sizeY; ++cy)
+		for (int cx = 0; cx < g.sizeX; ++cx)
+			if (map.getCellMotionByIndex(cx, cy) == wanted)
+				centres.emplace_back(g.cellCenterX(cx), g.cellCenterY(cy));
+	return centres;
+}
+}  // namespace
+
+std::vector<std::pair<double, double>> CEvidentialGridMap2D::getAppearedCellCenters() const
+{
+	return centresOf(*this, Motion::Appeared);
+}
+
+std::vector<std::pair<double, double>>
+	CEvidentialGridMap2D::getDisappearedCellCenters() const
+{
+	return centresOf(*this, Motion::Disappeared);
+}
