@@ -309,11 +309,12 @@ TEST(BadOptions, ExtremeLikelihoodOptionsGiveNumbers)
 TEST(BadOptions, LongMaxRangeAtFineResolutionAllocatesLittle)
 {
 	// Dense polar rows would take 1081 x 100,000 masses of 32 bytes (3.5 GB)
-	// whatever the ranges; sparse rows hold a few bins per sector.
+	// whatever the ranges; sparse rows hold the bins around the impacts (21
+	// per sector for the default imprecision of 0.1 m in 1 cm bins).
 	CEvidentialGridMap2D map(-5, 5, -5, 5, 0.01);
 	map.insertionOptions.maxRange = 1000.0;
 	resetLargestAllocation();
 	EXPECT_NO_THROW(map.insertObservation(
 		arcScan(1081, 3.0, kBadInputSetup.aperture(1.5 * M_PI)), CPose3D()));
-	EXPECT_LT(largestAllocation(), std::size_t(1) << 20);
+	EXPECT_LT(largestAllocation(), std::size_t(4) << 20);
 }

@@ -44,6 +44,8 @@ CEvidentialGridMap2D makeMap(SensorModel model = SensorModel::MultiEcho)
 	map.insertionOptions.sensorModel = model;
 	map.insertionOptions.muF = kMuF;
 	map.insertionOptions.muO = kMuO;
+	// The seed's geometry: free evidence up to the impacts.
+	map.insertionOptions.freeMargin = 0.0;
 	return map;
 }
 
@@ -199,6 +201,7 @@ TEST(MapInsert, BulkCellsTrackDoublePrecisionOverManyScans)
 	// thousand scans with decay (every tenth scan looking away), stays within
 	// 1e-3 of the double-precision algebra, and within two steps after one.
 	CEvidentialGridMap2D map = makeMap(SensorModel::ReinforcedMultiEcho);
+	map.insertionOptions.conflictHandling = ConflictHandling::Keep;
 	const double rate = 0.05;
 	map.insertionOptions.decayRate = rate;
 	const CPose3D sensor = kRobot + kSensorPose;

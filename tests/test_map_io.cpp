@@ -149,6 +149,45 @@ void putLE(std::vector<std::uint8_t>& bytes, std::size_t at, std::uint64_t v, in
 {
 	for (int i = 0; i < n; ++i) bytes[at + i] = static_cast<std::uint8_t>(v >> (8 * i));
 }
+
+/** The bytes version 1 would have written for `map` (whose stamp table fits
+ * version 1): today's layout without freeMargin, the motion options and
+ * keepsConflict, and stamps without their impact flag. */
+std::vector<std::uint8_t> asVersion1(const CEvidentialGridMap2D& map)
+{
+	std::vector<std::uint8_t> bytes = test::serialize(map);
+	const std::size_t header = 1 + (bytes[0] & 0x7F) + 1;
+	bytes[header - 1] = 1;
+	const std::size_t cells = map.geometry().cellCount();
+	const std::size_t firstCell = bytes.size() - 9 - 8 * cells;
+	for (std::size_t i = 0; i < cells; ++i)
+		bytes[firstCell + 8 * i + 7] &= 0x3F;  // the stamp's flag bits
+	// From the back, so that the positions in front stay put: keepsConflict
+	// before the cells, the motion options after growthMargin, freeMargin
+	// after invalidRangesAsFree (offsets of the layout in the io source).
+	bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(firstCell - 1));
+	const std::size_t insertion = header + 32 + 8;
+	const std::size_t freeMargin = insertion + 1 + 8 + 8 + 8 + 1 + 8 + 8 + 1;
+	const std::size_t motion = freeMargin + 8 + 1 + 8 + 8 + 1 + 8;
+	const auto cut = [&](std::size_t at, std::size_t n) {
+		bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(at),
+					bytes.begin() + static_cast<std::ptrdiff_t>(at + n));
+	};
+	cut(motion, 24);
+	cut(freeMargin, 8);
+	reseal(bytes);
+	return bytes;
+}
+
+/** A small map that keeps conflict and holds some. */
+CEvidentialGridMap2D conflictingMap()
+{
+	CEvidentialGridMap2D map(-2.0, 2.0, -2.0, 2.0, 0.1);
+	map.insertionOptions.conflictHandling = ConflictHandling::Keep;
+	map.insertObservation(test::arcScan(181, 1.5, kSetup.at(1.0)), CPose3D());
+	map.insertObservation(test::arcScan(181, 1.8, kSetup.at(2.0)), CPose3D());
+	return map;
+}
 }  // namespace
 
 TEST(MapIO, BuiltMapIsNotTrivial)
@@ -283,18 +322,53 @@ TEST(MapIO, EveryTruncationIsDetected)
 	EXPECT_EQ(end.report, "");
 }
 
+TEST(MapIO, VersionOneFilesStillLoad)
+{
+	// Version 1 had no free margin, no motion layer and cells that always
+	// kept conflict. A map that keeps conflict reads back as it was, with
+	// freeMargin 0 (what it was built with); its cells that lean occupied
+	// are taken to have held impacts, as the likelihood field needs.
+	const CEvidentialGridMap2D original = conflictingMap();
+	ASSERT_GT(original.countDecisions().conflict, 0u);
+	CEvidentialGridMap2D back;
+	deserialize(asVersion1(original), back);
+	EXPECT_TRUE(back.storage().keepsConflict());
+	EXPECT_EQ(back.insertionOptions.freeMargin, 0.0);
+	const std::size_t cells = original.geometry().cellCount();
+	ASSERT_EQ(back.geometry().cellCount(), cells);
+	for (std::size_t i = 0; i < cells; ++i)
+	{
+		ASSERT_EQ(back.storage().read(i), original.storage().read(i)) << i;
+		const Mass m = back.storage().read(i);
+		ASSERT_EQ(back.storage().heldImpact(i), m.occupied > m.free) << i;
+	}
+
+	// A map of another conflict handling loses its (rounding-level)
+	// conflict and gets a motion layer, with no event yet.
+	CEvidentialGridMap2D other = conflictingMap();
+	other.insertionOptions.conflictHandling = ConflictHandling::Normalize;
+	CEvidentialGridMap2D motion;
+	deserialize(asVersion1(other), motion);
+	EXPECT_FALSE(motion.storage().keepsConflict());
+	for (std::size_t i = 0; i < cells; ++i)
+	{
+		const Mass m = motion.storage().read(i);
+		ASSERT_EQ(m.conflict, 0.0);
+		ASSERT_MASS_NEAR_AT(m, normalized(original.storage().read(i)), 2e-4, i, 0);
+		ASSERT_EQ(motion.storage().event(i), CellEvent::None);
+	}
+}
+
 TEST(MapIO, VersionZeroFilesStillLoad)
 {
-	// Version 0 stored m(empty), m(F) and m(O) themselves in the cells; this
-	// version stores the conflict and the normal part (issue 14). A map with
-	// conflict, written as version 0 would have written it, reads back with
-	// the same masses within the two formats' roundings.
-	CEvidentialGridMap2D original(-2.0, 2.0, -2.0, 2.0, 0.1);
-	original.insertObservation(test::arcScan(181, 1.5, kSetup.at(1.0)), CPose3D());
-	original.insertObservation(test::arcScan(181, 1.8, kSetup.at(2.0)), CPose3D());
+	// Version 0 stored m(empty), m(F) and m(O) themselves in the cells;
+	// version 1 the conflict and the normal part (issue 14), in the same
+	// layout. A map with conflict, written as version 0 would have written
+	// it, reads back with the same masses within the two formats' roundings.
+	const CEvidentialGridMap2D original = conflictingMap();
 	ASSERT_GT(original.countDecisions().conflict, 0u);
 
-	auto bytes = serialize(original);
+	auto bytes = asVersion1(original);
 	const std::size_t versionPos = 1 + (bytes[0] & 0x7F);
 	bytes[versionPos] = 0;
 	const std::size_t cells = original.geometry().cellCount();
@@ -332,8 +406,8 @@ TEST(MapIO, UnknownVersionIsRejected)
 	auto bytes = serialize(makeMap(0.3));
 	// MRPT's object header: 0x80 | name length, the class name, the version.
 	const std::size_t versionPos = 1 + (bytes[0] & 0x7F);
-	ASSERT_EQ(bytes[versionPos], 1);
-	for (const std::uint8_t v : {2, 3, 0x7F, 0xFF})
+	ASSERT_EQ(bytes[versionPos], 2);
+	for (const std::uint8_t v : {3, 4, 0x7F, 0xFF})
 	{
 		bytes[versionPos] = v;
 		CEvidentialGridMap2D target;
@@ -459,7 +533,7 @@ TEST(BadFile, ResealedStreamsStillPassTheChecks)
 	}
 	const std::size_t geometry = 1 + (good[0] & 0x7F) + 1;
 	const std::size_t cells = static_cast<std::size_t>(map.getSizeX() * map.getSizeY());
-	const std::size_t insertions = good.size() - 9 - cells * 8 - 16;
+	const std::size_t insertions = good.size() - 9 - cells * 8 - 17;
 	struct Forgery
 	{
 		const char* what;

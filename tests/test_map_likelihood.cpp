@@ -387,7 +387,8 @@ void checkFieldAgainstBruteForce(CEvidentialGridMap2D& map)
 		{
 			const auto m = map.getCellMassesByIndex(cx, cy);
 			const double rest = m.free + m.occupied + m.unknown;
-			if (rest > 1e-12 && m.occupied / rest >= o.occupiedMass)
+			if (rest > 1e-12 && m.occupied / rest >= o.occupiedMass &&
+				map.storage().heldImpact(g.index(cx, cy)))
 				obstacles.emplace_back(cx, cy);
 		}
 	ASSERT_GT(obstacles.size(), 100u);
@@ -464,6 +465,9 @@ TEST(Likelihood, ConflictIsSetAsideToFindObstacles)
 	// A wall seen at x = 5.02, then at 5.12: the cell [5, 5.05) is hit once
 	// and passed through once, and holds mostly conflict.
 	CEvidentialGridMap2D map(-10, 10, -10, 10, 0.05);
+	map.insertionOptions.conflictHandling = mrpt_evidential::ConflictHandling::Keep;
+	map.insertionOptions.sensorModel = mrpt_evidential::SensorModel::ReinforcedMultiEcho;
+	map.insertionOptions.freeMargin = 0.0;
 	ASSERT_TRUE(map.insertObservation(wallScan(5.02, 1.0), CPose3D()));
 	ASSERT_TRUE(map.insertObservation(wallScan(5.12, 2.0), CPose3D()));
 	const auto m = map.getCellMasses(5.025, 0.0);

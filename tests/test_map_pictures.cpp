@@ -48,6 +48,7 @@ CEvidentialGridMap2D conflictingMap()
 {
 	CEvidentialGridMap2D map(-4.0, 4.0, -4.0, 4.0, 0.1);
 	map.insertionOptions.growthMargin = 0.0;
+	map.insertionOptions.conflictHandling = ConflictHandling::Keep;
 	map.insertObservation(test::arcScan(kRays, 2.0, kSetup.at(10.0)), mrpt::poses::CPose3D());
 	map.insertObservation(test::arcScan(kRays, 3.0, kSetup.at(11.0)), mrpt::poses::CPose3D());
 	return map;
@@ -307,7 +308,7 @@ TEST(MapPictures, RosMapFiles)
 	EXPECT_NE(yaml.find("free_thresh: 0.196\n"), std::string::npos) << yaml;
 }
 
-TEST(MapPictures, SavedRepresentationWritesFiveFilesAndNoTemporary)
+TEST(MapPictures, SavedRepresentationWritesSixFilesAndNoTemporary)
 {
 	const fs::path dir = test::scratchDir("map_pictures", "representation");
 	const CEvidentialGridMap2D map = conflictingMap();
@@ -317,7 +318,7 @@ TEST(MapPictures, SavedRepresentationWritesFiveFilesAndNoTemporary)
 		filesIn(dir),
 		(std::set<std::string>{
 			"run1_evidential.png", "run1_betp.png", "run1_conflict.png",
-			"run1_info.txt", "run1.evgrid"}));
+			"run1_motion.png", "run1_info.txt", "run1.evgrid"}));
 
 	mrpt::img::CImage loaded, expected;
 	ASSERT_TRUE(loaded.loadFromFile(prefix + "_evidential.png"));
@@ -344,7 +345,7 @@ TEST(MapPictures, SavedRepresentationWritesFiveFilesAndNoTemporary)
 
 	// Writing again replaces the files, still without leftovers.
 	map.saveMetricMapRepresentationToFile(prefix);
-	EXPECT_EQ(filesIn(dir).size(), 5u);
+	EXPECT_EQ(filesIn(dir).size(), 6u);
 }
 
 TEST(MapPictures, FailedWritesThrowAndLeaveNothing)
@@ -375,7 +376,8 @@ TEST(MapPictures, FailedWritesThrowAndLeaveNothing)
 	EXPECT_EQ(
 		filesIn(dir),
 		(std::set<std::string>{
-			"y_evidential.png", "y_betp.png", "y_conflict.png", "y_info.txt"}));
+			"y_evidential.png", "y_betp.png", "y_conflict.png", "y_motion.png",
+			"y_info.txt"}));
 	EXPECT_TRUE(fs::is_directory(dir / "y_info.txt"));
 }
 

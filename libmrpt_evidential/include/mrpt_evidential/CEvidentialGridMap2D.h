@@ -246,16 +246,18 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	 * files. Angles are in degrees in files, radians here. */
 	struct TInsertionOptions : public mrpt::config::CLoadableOptions
 	{
-		/** `sensorModel`: MultiEcho, ReinforcedMultiEcho (default) or
-		 * ImpreciseMultiEcho. */
-		SensorModel sensorModel = SensorModel::ReinforcedMultiEcho;
+		/** `sensorModel`: MultiEcho, ReinforcedMultiEcho or
+		 * ImpreciseMultiEcho (default: walls seen with the error of a SLAM
+		 * front end read occupied, doc/dynamics.md). */
+		SensorModel sensorModel = SensorModel::ImpreciseMultiEcho;
 		/** `muF`: detection rate, [0, 1], default 0.7. */
 		double muF = 0.7;
 		/** `muO`: true-positive rate, [0, 1], default 0.9. */
 		double muO = 0.9;
-		/** `imprecision`: half-width d of an impact, metres, >= 0, default 0
-		 * (ImpreciseMultiEcho only). */
-		double imprecision = 0.0;
+		/** `imprecision`: half-width d of an impact, metres, >= 0, default
+		 * 0.1 (ImpreciseMultiEcho only): the error of a SLAM front end's
+		 * poses and of the scanner, a few centimetres each. */
+		double imprecision = 0.1;
 		/** `imprecisionProfile`: Box (default) or Gaussian. */
 		ImprecisionProfile imprecisionProfile = ImprecisionProfile::Box;
 		/** `sectorWidth`: angular width of a polar sector, radians (degrees in
@@ -267,6 +269,9 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 		/** `invalidRangesAsFree`: a beam without return proves free space up
 		 * to maxRange, default false (it proves nothing). */
 		bool invalidRangesAsFree = false;
+		/** `freeMargin`: metres before each impact where a beam proves
+		 * nothing free (TSourceGridOptions::freeMargin), >= 0, default 0.2. */
+		double freeMargin = 0.2;
 		/** `fusionRule`: Conjunctive (default), Dempster, Yager, DuboisPrade
 		 * or Cautious. */
 		FusionRule fusionRule = FusionRule::Conjunctive;
@@ -349,7 +354,9 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 		 * occupied mass with the conflict set aside, m(O) / (1 - m(empty)),
 		 * is >= this (m(O) itself for a cell without conflict; with
 		 * ConflictHandling::Keep wall surfaces are mostly conflict), (0, 1],
-		 * default 0.3. */
+		 * default 0.3. Only cells that have held an impact are obstacles:
+		 * the imprecise model draws walls a few cells thick, but the scans
+		 * being scored end where beams ended. */
 		double occupiedMass = 0.3;
 		/** `maxCorrsDistance`: distances to the nearest obstacle are cut at
 		 * this, metres, > 0, default 0.3. */

@@ -171,7 +171,7 @@ void EvidentialGridStorage::rebaseStamps(double to)
 			factor[s] = std::exp(-m_decayRate * (to - m_stampTimes[s]));
 		for (QuantizedCell& c : m_cells)
 		{
-			const double d = factor[c.stamp];
+			const double d = factor[c.stamp & kStampMask];
 			if (d >= 1.0) continue;
 			if (m_keepsConflict)
 				encodeMass(decayed(decodeMass(c), d), c);
@@ -207,7 +207,7 @@ void EvidentialGridStorage::rebaseStamps(double to)
 		if (m_stampTimes[s] == to) newStamp[s] = present;
 	for (QuantizedCell& c : m_cells)
 	{
-		c.stamp = present;
+		c.stamp = static_cast<std::uint16_t>((c.stamp & kHeldImpact) | present);
 		if (m_keepsConflict || eventOf(c) == CellEvent::None) continue;
 		const std::uint16_t s = newStamp[eventStampOf(c)];
 		c.aside = s == kEventStampMask ? 0 : packEvent(eventOf(c), s);
@@ -229,7 +229,7 @@ void EvidentialGridStorage::updateGains()
 void EvidentialGridStorage::assign(
 	const GridGeometry& geometry, std::vector<QuantizedCell> cells,
 	std::vector<double> stampTimes, std::size_t insertions, double decayRate,
-	bool keepsConflict)
+	bool keepsConflict, bool plainStamps)
 {
 	if (geometry.sizeX < 0 || geometry.sizeY < 0 ||
 		!GridGeometry::withinLimits(
@@ -242,7 +242,8 @@ void EvidentialGridStorage::assign(
 			" does not match the geometry");
 	// Before the first insertion there is one time: the first insertion
 	// starts the table again, and must not leave a cell with a later stamp.
-	if (stampTimes.empty() || stampTimes.size() > kMaxStampsOfVersion1 ||
+	if (stampTimes.empty() ||
+		stampTimes.size() > (plainStamps ? kMaxStampsOfVersion1 : kMaxStamps) ||
 		(insertions == 0 && stampTimes.size() != 1))
 		throw std::invalid_argument("invalid number of insertion times");
 	for (std::size_t i = 0; i < stampTimes.size(); ++i)
@@ -253,8 +254,35 @@ void EvidentialGridStorage::assign(
 		decayRate * (stampTimes.back() - stampTimes.front()) > kMaxGainExponent)
 		throw std::invalid_argument("invalid decay rate");
 	const std::uint16_t ceiling = ceilingFor(keepsConflict);
+	if (plainStamps)
+	{
+		for (const QuantizedCell& c : cells)
+			if (c.stamp >= stampTimes.size())
+				throw std::invalid_argument("a cell holds an invalid stamp");
+		if (stampTimes.size() > kMaxStamps)
+		{
+			// Every cell decayed to the latest time, the one time kept.
+			const double latest = stampTimes.back();
+			for (QuantizedCell& c : cells)
+			{
+				const double d = std::exp(-decayRate * (latest - stampTimes[c.stamp]));
+				if (d < 1.0)
+				{
+					if (keepsConflict)
+						encodeMass(decayed(decodeMass(c), d), c);
+					else
+						encodeNormal(decayed(decodeNormal(c), d), c);
+				}
+				c.stamp = 0;
+			}
+			stampTimes.assign(1, latest);
+		}
+		for (QuantizedCell& c : cells)
+			if (c.occupied > c.free) c.stamp |= kHeldImpact;
+	}
 	for (const QuantizedCell& c : cells)
-		if (!isConsistent(c, keepsConflict) || c.stamp >= stampTimes.size() ||
+		if (!isConsistent(c, keepsConflict) || (c.stamp & ~(kStampMask | kHeldImpact)) != 0 ||
+			(c.stamp & kStampMask) >= stampTimes.size() ||
 			(!keepsConflict &&
 			 (std::max(c.free, c.occupied) > ceiling ||
 			  (eventOf(c) != CellEvent::None && eventStampOf(c) >= stampTimes.size()))))
@@ -268,7 +296,6 @@ void EvidentialGridStorage::assign(
 	m_ceiling = ceiling;
 	m_currentStamp = static_cast<std::uint16_t>(m_stampTimes.size() - 1);
 	updateGains();
-	if (m_stampTimes.size() > kMaxStamps) rebaseStamps(latestTime());
 }
 
 }  // namespace mrpt_evidential

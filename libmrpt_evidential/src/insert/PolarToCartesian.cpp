@@ -165,9 +165,14 @@ void CPolarToCartesian::setup(
 			? 0.0
 			: (static_cast<double>(polar.informedBins(s)) + 0.5) * bin;
 		const double freeEnd = (static_cast<double>(polar.freeBins(s)) - 0.5) * bin;
+		const std::vector<double>& impacts = polar.impacts(s);
+		const double nearest = impacts.empty() ? HUGE_VAL : impacts.front();
+		const double limit = nearest < static_cast<double>(polar.binCount()) * bin
+			? std::max(0.0, nearest - std::max(0.5 * bin, polar.freeMargin()))
+			: HUGE_VAL;
 		m_sectorSpans[s] = {
 			reach * reach, polar.freeBins(s) == 0 ? -1.0 : freeEnd * freeEnd,
-			polar.freeMass(s)};
+			polar.freeMass(s), limit};
 	}
 	// Between two sector centres the mix reaches as far as the longer
 	// sector; before the first and after the last centre, the sector alone.
@@ -199,9 +204,12 @@ void CPolarToCartesian::setup(
 	if (best == votes.end() || best->first <= 0.0) return;
 	const double w = best->first;
 	m_uniformMass = Mass::simpleFree(w);
+	// The uniform region stops short of the free margin; past it the mixed
+	// path cuts the free evidence at each sector's limit.
+	const auto marginBins = static_cast<std::size_t>(std::ceil(polar.freeMargin() / bin));
 	const auto uniformBins = [&](std::size_t s) {
-		return polar.freeBins(s) > 0 && polar.freeMass(s) == w
-			? polar.freeBins(s)
+		return polar.freeBins(s) > marginBins && polar.freeMass(s) == w
+			? polar.freeBins(s) - marginBins
 			: 0;
 	};
 	outline(

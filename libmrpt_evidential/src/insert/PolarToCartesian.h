@@ -139,9 +139,10 @@ class CPolarToCartesian
 	 * gets no free evidence: it holds part of what a beam hit, so that beam
 	 * does not prove it free (without this, walls gather free and occupied
 	 * evidence from scan to scan and turn into conflict). Nor does a cell
-	 * between two sectors past the line that joins their nearest impacts:
-	 * where a wall is oblique, the longer sector's free run would otherwise
-	 * reach into the wall behind the shorter one's impact. */
+	 * between two sectors past the nearer one's free limit (its nearest
+	 * impact less the free margin): where a wall is oblique, the longer
+	 * sector's free run would otherwise reach into the wall behind the
+	 * shorter one's impact. */
 	template <typename VisitMixed, typename VisitUniform>
 	void forEachInformedCell(
 		const GridGeometry& grid, VisitMixed&& visitMixed,
@@ -195,9 +196,10 @@ class CPolarToCartesian
 		 * range both hold freeMass); negative without a free run. */
 		double freeEnd2;
 		double freeMass;
-		/** Range of the sector's nearest impact less half a bin, +inf without
-		 * one: between two sectors, free evidence stops at the line joining
-		 * their impacts (past it lies the wall they both hit). */
+		/** Range of the sector's nearest impact less half a bin (or the free
+		 * margin, if longer), +inf without one: between two sectors, free
+		 * evidence stops at the nearer one's limit (past it, where a wall is
+		 * oblique, lies the wall the nearer beam hit). */
 		double freeLimit;
 	};
 	std::vector<SectorSpan> m_sectorSpans;
@@ -242,7 +244,11 @@ inline bool CPolarToCartesian::mixAt(
 	// Where each sector's two bins hold one constant mass (free run or
 	// vacuous tail: most cells between sectors of different lengths), the mix
 	// is along the angle only, with no range bins to look up.
-	const double limit = (1 - ns.wHi) * lo.freeLimit + ns.wHi * hi.freeLimit;
+	// A sector of no weight (a cell on the other one's centre line) does
+	// not count.
+	const double limit = ns.wHi < 1e-6 ? lo.freeLimit
+		: ns.wHi > 1 - 1e-6            ? hi.freeLimit
+									   : std::min(lo.freeLimit, hi.freeLimit);
 	const bool pastImpacts = range2 >= limit * limit;  // false for +inf
 	const bool loFree = range2 < lo.freeEnd2, hiFree = range2 < hi.freeEnd2;
 	if ((loFree || range2 >= lo.reach2) && (hiFree || range2 >= hi.reach2))

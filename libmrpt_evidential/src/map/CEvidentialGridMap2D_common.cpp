@@ -292,6 +292,7 @@ TSourceGridOptions CEvidentialGridMap2D::TInsertionOptions::sourceGridOptions(
 	o.maxRange = maxRange;
 	o.binSize = resolution;
 	o.invalidRangesAsFree = invalidRangesAsFree;
+	o.freeMargin = freeMargin;
 	return o;
 }
 
@@ -307,6 +308,7 @@ void CEvidentialGridMap2D::TInsertionOptions::loadFromConfigFile(
 	detail::readDegrees(source, section, "sectorWidth", o.sectorWidth);
 	detail::readDouble(source, section, "maxRange", o.maxRange);
 	detail::readBool(source, section, "invalidRangesAsFree", o.invalidRangesAsFree);
+	detail::readDouble(source, section, "freeMargin", o.freeMargin);
 	detail::readEnum(source, section, "fusionRule", o.fusionRule);
 	detail::readDouble(source, section, "decayRate", o.decayRate);
 	detail::readDegrees(
@@ -339,6 +341,8 @@ void CEvidentialGridMap2D::TInsertionOptions::saveToConfigFile(
 	writeValue(target, section, "maxRange", maxRange, "m");
 	writeValue(target, section, "invalidRangesAsFree", invalidRangesAsFree,
 			   "a beam without return proves free space");
+	writeValue(target, section, "freeMargin", freeMargin,
+			   "m before each impact where a beam proves nothing free");
 	writeValue(target, section, "fusionRule", fusionRule,
 			   "Conjunctive, Dempster, Yager, DuboisPrade or Cautious");
 	writeValue(target, section, "decayRate", decayRate, "1/s of data time, 0 = none");

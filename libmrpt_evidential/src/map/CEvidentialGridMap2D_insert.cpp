@@ -107,13 +107,16 @@ void CEvidentialGridMap2D::fuseKeepingConflict(const CScanImpacts& impacts)
 			const std::size_t hit = std::min(hits.nextFrom(first), end);
 			if (hit > first) run(first, hit - first);
 			if (hit == end) break;
+			m_grid.markImpact(hit);
 			single(hit, withImpact(uniform, hits.occupiedAt(hit)));
 			first = hit + 1;
 		}
 	};
 	const auto mixed = [&](std::size_t idx, const Mass& observed) {
 		const double hit = hits.occupiedAt(idx);
-		return hit > 0.0 ? withImpact(observed, hit) : observed;
+		if (hit <= 0.0) return observed;
+		m_grid.markImpact(idx);
+		return withImpact(observed, hit);
 	};
 	const auto conjunctive = [&](auto decays) {
 		const auto single = [&](std::size_t idx, const Mass& observed) {

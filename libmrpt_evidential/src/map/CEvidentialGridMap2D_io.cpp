@@ -7,7 +7,8 @@
  *   budget       u64 maxCells
  *   insertion    u8 sensorModel, f64 muF, f64 muO, f64 imprecision,
  *                u8 imprecisionProfile, f64 sectorWidth (rad), f64 maxRange,
- *                u8 invalidRangesAsFree, u8 fusionRule, f64 decayRate,
+ *                u8 invalidRangesAsFree, f64 freeMargin, u8 fusionRule,
+ *                f64 decayRate,
  *                f64 horizontalTolerance (rad), u8 conflictHandling,
  *                f64 growthMargin, f64 motionWindow, f64 motionMinConflict,
  *                f64 motionClearance
@@ -22,7 +23,8 @@
  *                u16 aside, u16 free, u16 occupied, u16 stamp: the conflict
  *                (keepsConflict) or the motion event, and the normal part's
  *                free and occupied masses (QuantizedCell)
- * Version 1 had no motion options and no keepsConflict: its cells always
+ * Version 1 had no freeMargin (read as 0), no motion options and no
+ * keepsConflict: its cells always
  * kept conflict. A file of a map whose conflictHandling is Keep still does;
  * any other has its conflict (0 but for rounding) dropped. Version 0 had
  * the layout of version 1 with m(F) and m(O) themselves in the cells
@@ -162,7 +164,7 @@ void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 	ar << io.muF << io.muO << io.imprecision;
 	writeEnum(ar, io.imprecisionProfile);
 	ar << io.sectorWidth << io.maxRange
-	   << static_cast<std::uint8_t>(io.invalidRangesAsFree);
+	   << static_cast<std::uint8_t>(io.invalidRangesAsFree) << io.freeMargin;
 	writeEnum(ar, io.fusionRule);
 	ar << io.decayRate << io.horizontalTolerance;
 	writeEnum(ar, io.conflictHandling);
@@ -236,6 +238,8 @@ void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 		readEnum<ImprecisionProfile>(ar, "imprecisionProfile");
 	ar >> io.sectorWidth >> io.maxRange;
 	io.invalidRangesAsFree = readBool(ar, "invalidRangesAsFree");
+	if (version >= 2) ar >> io.freeMargin;
+	else io.freeMargin = 0.0;  // what version 1 maps were built with
 	io.fusionRule = readEnum<FusionRule>(ar, "fusionRule");
 	ar >> io.decayRate >> io.horizontalTolerance;
 	io.conflictHandling = readEnum<ConflictHandling>(ar, "conflictHandling");
@@ -324,7 +328,8 @@ void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 	{
 		grid.assign(
 			g, std::move(cells), std::move(stamps),
-			static_cast<std::size_t>(insertions), decayRate, keepsConflict);
+			static_cast<std::size_t>(insertions), decayRate, keepsConflict,
+			version < 2);
 	}
 	catch (const std::invalid_argument& e)
 	{

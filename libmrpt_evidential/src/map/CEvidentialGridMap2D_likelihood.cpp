@@ -315,8 +315,9 @@ std::shared_ptr<const CEvidentialGridMap2D::LikelihoodField>
 			bool obstacle = false;
 			if (map.inside(cx, cy))
 			{
-				const Mass m = m_grid.read(map.index(cx, cy));
-				obstacle = occupiedShare(m) >= opts.occupiedMass;
+				const std::size_t idx = map.index(cx, cy);
+				const Mass m = m_grid.read(idx);
+				obstacle = m_grid.heldImpact(idx) && occupiedShare(m) >= opts.occupiedMass;
 				if (decide(m) != Decision::Unknown)
 					field->code[g.index(fx, fy)] = Field::kFarSeen;
 			}

@@ -58,6 +58,7 @@ void CEvidentialGridMap2D::fuseWithMotion(const CScanImpacts& impacts)
 			geometry(),
 			[&](std::size_t idx, const Mass& observed) {
 				const double hit = hits.occupiedAt(idx);
+				if (hit > 0.0) m_grid.markImpact(idx);
 				single(idx, hit > 0.0 ? withImpact(observed, hit) : observed);
 			},
 			[&](std::size_t first, std::size_t count) {
@@ -68,6 +69,7 @@ void CEvidentialGridMap2D::fuseWithMotion(const CScanImpacts& impacts)
 					const std::size_t hit = std::min(hits.nextFrom(first), end);
 					if (hit > first) fuseRun(decays, first, hit - first);
 					if (hit == end) break;
+					m_grid.markImpact(hit);
 					single(hit, withImpact(uniform, hits.occupiedAt(hit)));
 					first = hit + 1;
 				}

@@ -23,6 +23,8 @@ std::optional<TInvalidOption> TSourceGridOptions::firstInvalid() const
 		return TInvalidOption{"maxRange", "a finite number > 0 (m)", maxRange};
 	if (!(binSize > 0.0 && std::isfinite(binSize)))
 		return TInvalidOption{"binSize", "a finite number > 0 (m)", binSize};
+	if (!(freeMargin >= 0.0 && std::isfinite(freeMargin)))
+		return TInvalidOption{"freeMargin", "a finite number >= 0 (m)", freeMargin};
 	if (maxRange / binSize > 1e7)
 		return TInvalidOption{
 			"maxRange", "at most 1e7 range bins long (maxRange / bin size)", maxRange};
@@ -73,6 +75,7 @@ void CPolarSourceGrid::build(
 		m_sectorCount = nBeams;
 	}
 	m_binSize = options.binSize;
+	m_freeMargin = options.freeMargin;
 	m_binCount =
 		static_cast<std::size_t>(std::ceil(options.maxRange / options.binSize));
 

@@ -39,9 +39,10 @@ class EvidentialGridStorage
 	 * event keeps its stamp in 14 bits). */
 	static constexpr std::size_t kMaxStamps = 16383;
 	/** Largest m(F) or m(O) of a cell of a grid without conflict: a parked
-	 * car seen for an hour is forgotten after some six free scans, as after a
-	 * minute. */
-	static constexpr double kMaxCertainty = 0.999;
+	 * car seen for an hour is forgotten after some eight free scans, as after
+	 * a minute (and a cell seen at the ceiling reads within 1e-4 of the
+	 * exact Dempster fusion). */
+	static constexpr double kMaxCertainty = 0.9999;
 
 	/** An empty (0 x 0) grid of resolution 0.1 m with no decay, keeping
 	 * conflict. */
@@ -119,7 +120,7 @@ class EvidentialGridStorage
 			c.free = std::min<std::uint16_t>(c.free, m_ceiling);
 			c.occupied = std::min<std::uint16_t>(c.occupied, m_ceiling);
 		}
-		c.stamp = m_currentStamp;
+		restamp(c);
 	}
 
 	/** @name Fusing evidence into cells
@@ -158,7 +159,7 @@ class EvidentialGridStorage
 			c, kMassScale * (1.0 - keep * observedKeep * (1.0 - newConflict)),
 			(f * (of + ou) + (kMassScale - f - o) * of) * normalize,
 			(o * (oo + ou) + (kMassScale - f - o) * oo) * normalize);
-		c.stamp = m_currentStamp;
+		restamp(c);
 	}
 	/** Dempster's rule on the stored values of a grid without conflict (the
 	 * conjunctive rule with the conflict normalized away, which is
@@ -178,7 +179,7 @@ class EvidentialGridStorage
 		encodeScaledNormal(
 			c, (f * (of + ou) + u * of) * normalize,
 			(o * (oo + ou) + u * oo) * normalize, m_ceiling);
-		c.stamp = m_currentStamp;
+		restamp(c);
 		return split;
 	}
 	/** The simple free mass m(F) = w, the mass of the bulk of a scan's
@@ -215,7 +216,7 @@ class EvidentialGridStorage
 				(o - o * w) * normalize);
 		else
 			encodeScaledNormal(c, (f + u * w) * normalize, (o - o * w) * normalize, m_ceiling);
-		c.stamp = m_currentStamp;
+		restamp(c);
 	}
 	/** True when no cell of [first, first + count) has an event or a stored
 	 * n(O) of `occupiedBelow` or more: free evidence then finds nothing
@@ -229,6 +230,13 @@ class EvidentialGridStorage
 		return loud == 0;
 	}
 	/** @} */
+
+	/** Records that cell idx holds an impact of the current scan. The
+	 * likelihood field takes its obstacles among such cells: the sensor
+	 * models spread an impact's occupied evidence over the cells around it,
+	 * but the scans being scored end where beams ended. */
+	void markImpact(std::size_t idx) { m_cells[idx].stamp |= kHeldImpact; }
+	bool heldImpact(std::size_t idx) const { return (m_cells[idx].stamp & kHeldImpact) != 0; }
 
 	/** @name Motion events (grids without conflict; CellEvent::None
 	 * otherwise)
@@ -260,8 +268,11 @@ class EvidentialGridStorage
 	const std::vector<QuantizedCell>& cells() const { return m_cells; }
 	const std::vector<double>& stampTimes() const { return m_stampTimes; }
 
-	/** Replaces the whole state with one read from a file. A table of more
-	 * than kMaxStamps times (files of version 1 allowed 65535) is rebased.
+	/** Replaces the whole state with one read from a file. `plainStamps`:
+	 * the cells' stamps are whole indices without flags (files of version 1,
+	 * which allowed 65535 times): a longer table than kMaxStamps is then
+	 * rebased, and the cells that lean occupied are taken to have held
+	 * impacts.
 	 * \throws std::invalid_argument if the pieces do not fit together (a
 	 *  geometry beyond the limits, cell count against geometry, a stamp
 	 *  without a time, masses above 1, times that go backwards, several
@@ -269,7 +280,7 @@ class EvidentialGridStorage
 	void assign(
 		const GridGeometry& geometry, std::vector<QuantizedCell> cells,
 		std::vector<double> stampTimes, std::size_t insertions,
-		double decayRate, bool keepsConflict);
+		double decayRate, bool keepsConflict, bool plainStamps = false);
 
    private:
 	/** A mass discounted by a decay factor. */
@@ -308,7 +319,12 @@ class EvidentialGridStorage
 	 * kernels vectorize. */
 	double decayFactor(std::uint16_t stamp) const
 	{
-		return m_presentGain * m_stampGain[stamp];
+		return m_presentGain * m_stampGain[stamp & kStampMask];
+	}
+	/** Stamps a cell with the current insertion, keeping its impact flag. */
+	void restamp(QuantizedCell& c) const
+	{
+		c.stamp = static_cast<std::uint16_t>((c.stamp & kHeldImpact) | m_currentStamp);
 	}
 	/** Decays every cell to time `to` (>= every stamp's time) and makes it
 	 * the stamp of every cell; the times of recent events stay. */

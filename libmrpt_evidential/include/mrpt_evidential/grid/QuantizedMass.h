@@ -16,8 +16,9 @@ namespace mrpt_evidential
  * A mass m is stored as K = m(empty) and the normal mass n = m / (1 - K) on
  * {F}, {O} and Omega, so that m = (1 - K) n + K m_empty. `free` and
  * `occupied` hold n(F) and n(O) in multiples of 1/kMassScale; n(Omega) is
- * what remains. `stamp` indexes the grid's table of insertion times: the cell
- * was last fused (or decayed) at that time.
+ * what remains. The 14 low bits of `stamp` index the grid's table of
+ * insertion times: the cell was last fused (or decayed) at that time; bit 14
+ * (kHeldImpact) says that the cell has held a beam's impact, bit 15 is 0.
  *
  * `aside` depends on what the grid keeps (EvidentialGridStorage::keepsConflict):
  * - K itself, for a grid that keeps conflict (ConflictHandling::Keep). The
@@ -61,6 +62,10 @@ enum class CellEvent : std::uint8_t
 	Disappeared = 2,
 	Leaving = 3
 };
+/** The stamp's bits (QuantizedCell::stamp). */
+constexpr std::uint16_t kStampMask = 0x3FFF;
+constexpr std::uint16_t kHeldImpact = 0x4000;
+
 /** Events keep their stamp in the 14 low bits of `aside`. */
 constexpr unsigned kEventStampBits = 14;
 constexpr std::uint16_t kEventStampMask = (1u << kEventStampBits) - 1;

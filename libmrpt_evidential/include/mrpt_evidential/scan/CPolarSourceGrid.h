@@ -34,6 +34,13 @@ struct TSourceGridOptions
 	 * may have hit glass, black or a sensor fault. true: free space up to
 	 * maxRange, like COccupancyGridMap2D's considerInvalidRangesAsFreeSpace. */
 	bool invalidRangesAsFree = false;
+	/** Metres before a sector's nearest impact where the grid cells get no
+	 * free evidence from it, >= 0, default 0 (the seed's models). The rows
+	 * keep the model's masses; the transform onto the cells applies the
+	 * margin. Where the impact lies is uncertain by the error of the robot's
+	 * pose, and walls seen from elsewhere, with that error, lie there:
+	 * without a margin, rays that end just behind a wall cell erase it. */
+	double freeMargin = 0.0;
 
 	/** The first option out of range, the sensor model's first. */
 	std::optional<TInvalidOption> firstInvalid() const;
@@ -101,6 +108,8 @@ class CPolarSourceGrid
 	const std::vector<double>& impacts(std::size_t s) const { return m_impacts.at(s); }
 	/** Index of the bin holding range r (binCount() beyond the last). */
 	std::size_t binOfRange(double r) const;
+	/** TSourceGridOptions::freeMargin of the latest build. */
+	double freeMargin() const { return m_freeMargin; }
 	/** The largest informedBins() of all sectors. */
 	std::size_t maxInformedBins() const { return m_maxInformedBins; }
 
@@ -124,7 +133,7 @@ class CPolarSourceGrid
 
    private:
 	std::size_t m_sectorCount = 0, m_binCount = 0;
-	double m_binSize = 0.0, m_firstAngle = 0.0, m_spacing = 0.0;
+	double m_binSize = 0.0, m_firstAngle = 0.0, m_spacing = 0.0, m_freeMargin = 0.0;
 	bool m_fullTurn = false;
 	std::vector<TSectorLayout> m_layouts;  //!< one per sector
 	std::vector<TBinRun> m_runs;
