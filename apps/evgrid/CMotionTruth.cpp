@@ -220,11 +220,12 @@ class CMotionTruth::CParser
 				item = item.substr(0, colon);
 			}
 			const std::size_t dash = item.find('-');
+			const long top = m_cells - 1;
 			const long first =
-				whole(item.substr(0, dash), "cell index", 0, m_cells - 1);
+				whole(item.substr(0, dash), "cell index", 0, top);
 			const long last = dash == std::string_view::npos
 				? first
-				: whole(item.substr(dash + 1), "cell index", first, m_cells - 1);
+				: whole(item.substr(dash + 1), "cell index", first, top);
 			if (static_cast<long>(out.size()) + (last - first + 1) > count)
 				fail("more cells than the line's count");
 			for (long i = first; i <= last; ++i)

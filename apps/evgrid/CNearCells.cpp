@@ -25,8 +25,8 @@ void CNearCells::assign(const std::vector<int>& cells)
 			   w * static_cast<std::size_t>(cell / m_grid.sizeX + 1)] = 1;
 	for (std::size_t y = 1; y < m_sums.size() / w; ++y)
 		for (std::size_t x = 1; x < w; ++x)
-			m_sums[x + w * y] += m_sums[x - 1 + w * y] + m_sums[x + w * (y - 1)] -
-				m_sums[x - 1 + w * (y - 1)];
+			m_sums[x + w * y] += m_sums[x - 1 + w * y] +
+				m_sums[x + w * (y - 1)] - m_sums[x - 1 + w * (y - 1)];
 }
 
 bool CNearCells::anyWithin(int cell, int distance) const

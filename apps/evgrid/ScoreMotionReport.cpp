@@ -67,23 +67,26 @@ std::string truthGrid(const TTruthGrid& g)
 		std::to_string(g.sizeY);
 }
 
+using KindValue = std::string (*)(const TKindScore&);
+std::string count(std::size_t n) { return std::to_string(n); }
 struct TKindRow
 {
 	const char* label;
-	std::string (*value)(const TKindScore&);
+	KindValue value;
 };
 const TKindRow kKindRows[] = {
-	{"truth cells", [](const TKindScore& k) { return std::to_string(k.truth); }},
-	{"recalled", [](const TKindScore& k) { return std::to_string(k.recalled); }},
+	{"truth cells", [](const TKindScore& k) { return count(k.truth); }},
+	{"recalled", [](const TKindScore& k) { return count(k.recalled); }},
 	{"recall", [](const TKindScore& k) { return text(TRatios(k).recall); }},
 	{"predicted (observed)",
-	 [](const TKindScore& k) { return std::to_string(k.predicted); }},
+	 [](const TKindScore& k) { return count(k.predicted); }},
 	{"true positives",
-	 [](const TKindScore& k) { return std::to_string(k.truePositives); }},
-	{"precision", [](const TKindScore& k) { return text(TRatios(k).precision); }},
+	 [](const TKindScore& k) { return count(k.truePositives); }},
+	{"precision",
+	 [](const TKindScore& k) { return text(TRatios(k).precision); }},
 	{"F1", [](const TKindScore& k) { return text(TRatios(k).f1); }},
 	{"map's cells (all)",
-	 [](const TKindScore& k) { return std::to_string(k.mapCells); }}};
+	 [](const TKindScore& k) { return count(k.mapCells); }}};
 }  // namespace
 
 void printMotionReport(
