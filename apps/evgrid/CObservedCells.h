@@ -34,8 +34,6 @@ class CObservedCells
 	const std::vector<int>& crossed() const { return m_crossed; }
 	/** Hit and crossed cells, each once. */
 	const std::vector<int>& observed() const { return m_observed; }
-	bool isHit(int cell) const { return m_flags[cell] & kHit; }
-	bool isCrossed(int cell) const { return m_flags[cell] & kCrossed; }
 
    private:
 	static constexpr std::uint8_t kHit = 1, kCrossed = 2;

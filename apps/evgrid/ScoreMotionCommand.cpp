@@ -7,6 +7,7 @@
 #include <mrpt_evidential/support/AtomicFile.h>
 
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <optional>
