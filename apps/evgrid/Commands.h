@@ -9,4 +9,5 @@ int runBuild(int argc, char** argv, int first);
 int runInspect(int argc, char** argv, int first);
 int runExport(int argc, char** argv, int first);
 int runCompare(int argc, char** argv, int first);
+int runScoreMotion(int argc, char** argv, int first);
 }  // namespace evgrid

@@ -3,9 +3,6 @@
  * line and runs the parts in order: both maps, the cell agreement, the
  * localization test, the report. */
 
-#include <unistd.h>
-
-#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <utility>
@@ -63,22 +60,6 @@ std::optional<int> parseOptions(
 		throw UsageError("--output needs a non-empty value");
 	options.quiet = argQuiet.getValue();
 	return std::nullopt;
-}
-
-/** Before any work: the report's folder exists (created if needed) and can
- * be written, and the file is not a folder. */
-void checkOutputFile(const std::string& path)
-{
-	namespace fs = std::filesystem;
-	std::string dir = fs::path(path).parent_path().string();
-	createFolder(dir);
-	if (dir.empty()) dir = ".";
-	std::error_code ec;
-	if (fs::is_directory(path, ec))
-		throw std::runtime_error(path + ": is a folder, not a file");
-	if (access(dir.c_str(), W_OK) != 0)
-		throw std::runtime_error(
-			path + ": cannot be written: its folder is not writable");
 }
 
 void compare(const TCompareOptions& options)

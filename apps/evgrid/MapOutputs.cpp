@@ -2,6 +2,8 @@
 
 #include "MapOutputs.h"
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <iomanip>
 #include <stdexcept>
@@ -19,6 +21,20 @@ void createFolder(const std::string& dir)
 	if (ec)
 		throw std::runtime_error(
 			dir + ": cannot create the folder: " + ec.message());
+}
+
+void checkOutputFile(const std::string& path)
+{
+	namespace fs = std::filesystem;
+	std::string dir = fs::path(path).parent_path().string();
+	createFolder(dir);
+	if (dir.empty()) dir = ".";
+	std::error_code ec;
+	if (fs::is_directory(path, ec))
+		throw std::runtime_error(path + ": is a folder, not a file");
+	if (access(dir.c_str(), W_OK) != 0)
+		throw std::runtime_error(
+			path + ": cannot be written: its folder is not writable");
 }
 
 std::vector<std::string> savePicturesIn(

@@ -14,6 +14,11 @@ namespace evgrid
  * folder. \throws std::runtime_error naming `dir` if it cannot be created. */
 void createFolder(const std::string& dir);
 
+/** Before any work, for a report written at the end: the folder of `path`
+ * exists (created if needed) and can be written, and `path` is not a
+ * folder. \throws std::runtime_error naming `path` otherwise. */
+void checkOutputFile(const std::string& path);
+
 /** Writes the map's pictures (CEvidentialGridMap2D::pictureNames()) into
  * `dir`, created if missing, each atomically.
  * \return the paths written. \throws std::runtime_error naming the file or

@@ -1,6 +1,6 @@
 /* evgrid: build, inspect, export and compare evidential (Dempster-Shafer)
- * occupancy grid maps. `evgrid <subcommand> --help` documents each
- * subcommand. */
+ * occupancy grid maps, and score their motion layer. `evgrid <subcommand>
+ * --help` documents each subcommand. */
 
 #include <iostream>
 #include <string>
@@ -25,7 +25,11 @@ void printOverview(std::ostream& out)
 		   "  compare  build our map and MRPT's COccupancyGridMap2D from the "
 		   "same scans; report\n"
 		   "           how their cells agree and each map's localization hit "
-		   "rate\n\n"
+		   "rate\n"
+		   "  score-motion  replay a rawlog of evgrid-simulate scan by scan; "
+		   "score the map's\n"
+		   "           motion layer (Appeared, Disappeared) against the "
+		   "simulator's ground truth\n\n"
 		   "'evgrid <subcommand> --help' lists a subcommand's options.\n"
 		   "Exit codes: 0 success, 1 failure (the message names the file), 2 "
 		   "bad command line.\n";
@@ -56,6 +60,7 @@ int main(int argc, char** argv)
 	else if (sub == "inspect") run = evgrid::runInspect;
 	else if (sub == "export") run = evgrid::runExport;
 	else if (sub == "compare") run = evgrid::runCompare;
+	else if (sub == "score-motion") run = evgrid::runScoreMotion;
 	else
 	{
 		evgrid::printError("evgrid", "unknown subcommand '" + sub + "'");

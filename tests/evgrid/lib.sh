@@ -1,8 +1,9 @@
 # Helpers of the evgrid tests, sourced by each script. CTest gives EVGRID (the
-# program), EVGRID_CHECK (the helper), EVGRID_LIB (the library, for stock
-# programs to preload), DATASETS (MRPT's datasets), EVGRID_INI
-# (rawlogs/evgrid.ini), EVGRID_DOC (doc/evgrid.md), MEMORY_BUDGET (the test
-# launcher, tests/support/memory_budget.cpp) and SCRATCH.
+# program), EVGRID_SIMULATE (evgrid-simulate), EVGRID_CHECK (the helper),
+# EVGRID_LIB (the library, for stock programs to preload), DATASETS (MRPT's
+# datasets), EVGRID_INI (rawlogs/evgrid.ini), EVGRID_DOC (doc/evgrid.md),
+# MEMORY_BUDGET (the test launcher, tests/support/memory_budget.cpp) and
+# SCRATCH.
 set -euo pipefail
 
 SENA="$DATASETS/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog"

@@ -1,0 +1,105 @@
+/* evgrid score-motion: the map's motion layer against the truth, summed over
+ * the scans. */
+
+#include "CMotionScorer.h"
+
+#include "CObservedCells.h"
+#include "CTruthEvents.h"
+
+using mrpt_evidential::Motion;
+
+namespace evgrid
+{
+CMotionScorer::CMotionScorer(const CMotionTruth& truth, int tolerance)
+	: m_grid(truth.grid()),
+	  m_tolerance(tolerance),
+	  m_static(m_grid.cellCount(), false),
+	  m_motion(m_grid.cellCount(), Motion::None),
+	  m_near(m_grid)
+{
+	for (const int cell : truth.staticCells())
+		m_static[cell] = true;
+}
+
+void CMotionScorer::score(
+	const mrpt_evidential::CEvidentialGridMap2D& map,
+	const CObservedCells& seen, const CTruthEvents& events, std::size_t k,
+	double time)
+{
+	const int cells = static_cast<int>(m_grid.cellCount());
+	for (int cell = 0; cell < cells; ++cell)
+		m_motion[cell] =
+			map.getCellMotion(m_grid.centreX(cell), m_grid.centreY(cell));
+	++m_totals.scans;
+	m_totals.hitCells += seen.hit().size();
+	m_totals.crossedCells += seen.crossed().size();
+
+	// Appeared things are where beams end, left cells where beams pass.
+	m_truth.clear();
+	for (const int cell : seen.hit())
+		if (events.appeared(cell)) m_truth.push_back(cell);
+	scoreKind(Motion::Appeared, m_truth, seen.observed(), m_totals.appeared);
+	m_truth.clear();
+	for (const int cell : seen.crossed())
+		if (events.disappeared(cell)) m_truth.push_back(cell);
+	scoreKind(
+		Motion::Disappeared, m_truth, seen.observed(), m_totals.disappeared);
+	scoreStatic(seen, k, time);
+}
+
+void CMotionScorer::scoreKind(
+	Motion kind, const std::vector<int>& truth,
+	const std::vector<int>& observed, TKindScore& out)
+{
+	m_predicted.clear();
+	for (const int cell : observed)
+		if (m_motion[cell] == kind) m_predicted.push_back(cell);
+	m_whole.clear();
+	for (int cell = 0, n = static_cast<int>(m_motion.size()); cell < n; ++cell)
+		if (m_motion[cell] == kind) m_whole.push_back(cell);
+	out.truth += truth.size();
+	out.predicted += m_predicted.size();
+	out.mapCells += m_whole.size();
+
+	// Each table costs a pass over the grid: built only when asked.
+	if (!m_predicted.empty())
+	{
+		m_near.assign(truth);
+		for (const int cell : m_predicted)
+			out.truePositives += m_near.anyWithin(cell, m_tolerance);
+	}
+	if (!truth.empty())
+	{
+		m_near.assign(m_whole);
+		for (const int cell : truth)
+			out.recalled += m_near.anyWithin(cell, m_tolerance);
+	}
+}
+
+void CMotionScorer::scoreStatic(
+	const CObservedCells& seen, std::size_t k, double time)
+{
+	std::size_t observed = 0, flagged = 0;
+	for (const int cell : seen.observed())
+	{
+		if (!m_static[cell]) continue;
+		++observed;
+		flagged += m_motion[cell] != Motion::None;
+	}
+	TStaticScore& s = m_totals.statics;
+	s.observed += observed;
+	s.flagged += flagged;
+	if (observed == 0) return;
+	++s.scans;
+	const double share =
+		static_cast<double>(flagged) / static_cast<double>(observed);
+	s.shareSum += share;
+	if (share > s.worstShare)
+	{
+		s.worstShare = share;
+		s.worstScan = k;
+		s.worstTime = time;
+	}
+}
+
+}  // namespace evgrid

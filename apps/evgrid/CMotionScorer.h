@@ -1,0 +1,91 @@
+/* evgrid score-motion: the map's motion layer against the truth, summed over
+ * the scans. */
+#pragma once
+
+#include <mrpt_evidential/CEvidentialGridMap2D.h>
+#include <mrpt_evidential/Motion.h>
+
+#include <cstddef>
+#include <vector>
+
+#include "CMotionTruth.h"
+#include "CNearCells.h"
+
+namespace evgrid
+{
+class CObservedCells;
+class CTruthEvents;
+
+/** The counts of one kind of motion (Appeared or Disappeared), summed over
+ * the scans scored. */
+struct TKindScore
+{
+	/** Truth cells, and those the map's whole set of the kind holds a cell
+	 * near. */
+	std::size_t truth = 0, recalled = 0;
+	/** Observed cells the map flags with the kind, and those a truth cell
+	 * of the kind lies near. */
+	std::size_t predicted = 0, truePositives = 0;
+	/** Cells of the truth's grid the map flags with the kind, observed or
+	 * not. */
+	std::size_t mapCells = 0;
+};
+
+/** The static cells (walls, furniture) the map flags as moving. */
+struct TStaticScore
+{
+	/** Observed static cells and those flagged, summed over the scans. */
+	std::size_t observed = 0, flagged = 0;
+	/** Scans that observed a static cell, and the sum of their shares. */
+	std::size_t scans = 0;
+	double shareSum = 0;
+	/** The scan of the largest share (the first of equal ones); share -1
+	 * when no scan observed a static cell. */
+	double worstShare = -1, worstTime = 0;
+	std::size_t worstScan = 0;
+};
+
+struct TMotionScore
+{
+	std::size_t scans = 0;
+	/** Hit and crossed cells, summed over the scans. */
+	std::size_t hitCells = 0, crossedCells = 0;
+	TKindScore appeared, disappeared;
+	TStaticScore statics;
+};
+
+/** Scores the map after each scan: the truth's events among the cells the
+ * scan observed against the map's motion read at the truth cells' centres,
+ * a predicted cell being right and a truth cell recalled when a cell of the
+ * other side lies within `tolerance` cells (Chebyshev). */
+class CMotionScorer
+{
+   public:
+	CMotionScorer(const CMotionTruth& truth, int tolerance);
+
+	/** Scores the map just after it took scan k, at `time` (seconds from
+	 * scan 0), whose observed cells are `seen`, the truth being at scan k. */
+	void score(
+		const mrpt_evidential::CEvidentialGridMap2D& map,
+		const CObservedCells& seen, const CTruthEvents& events, std::size_t k,
+		double time);
+
+	const TMotionScore& totals() const { return m_totals; }
+
+   private:
+	void scoreKind(
+		mrpt_evidential::Motion kind, const std::vector<int>& truth,
+		const std::vector<int>& observed, TKindScore& out);
+	void scoreStatic(const CObservedCells& seen, std::size_t k, double time);
+
+	const TTruthGrid& m_grid;
+	int m_tolerance;
+	std::vector<bool> m_static;
+	/** The map's motion at each truth cell's centre, this scan. */
+	std::vector<mrpt_evidential::Motion> m_motion;
+	CNearCells m_near;
+	std::vector<int> m_truth, m_predicted, m_whole;
+	TMotionScore m_totals;
+};
+
+}  // namespace evgrid

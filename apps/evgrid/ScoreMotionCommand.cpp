@@ -1,0 +1,243 @@
+/* evgrid score-motion: replays a simulated rawlog into the map scan by scan
+ * and scores its motion layer against the simulator's ground truth after
+ * every scan. This file reads the command line, matches the input's scans to
+ * the truth's records and runs the parts in order. */
+
+#include <mrpt/core/Clock.h>
+#include <mrpt_evidential/support/AtomicFile.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+
+#include "CInputWalker.h"
+#include "CMotionScorer.h"
+#include "CMotionTruth.h"
+#include "CObservedCells.h"
+#include "CProgress.h"
+#include "CTruthEvents.h"
+#include "CommandLine.h"
+#include "Commands.h"
+#include "InputOptions.h"
+#include "MapOutputs.h"
+#include "ScoreMotionOptions.h"
+#include "ScoreMotionReport.h"
+
+using mrpt_evidential::CEvidentialGridMap2D;
+
+namespace evgrid
+{
+namespace
+{
+/** The truth writes times from scan 0 with two decimals and scan 0's Unix
+ * time with three: a scan and its record are this close. */
+constexpr double kTimeTolerance = 0.006;
+
+std::optional<int> parseOptions(
+	int argc, char** argv, int first, TScoreMotionOptions& options)
+{
+	TCLAP::CmdLine cmd(
+		"Builds the map from a rawlog of evgrid-simulate scan by scan and, "
+		"after each scan, scores its motion layer (getCellMotion: Appeared, "
+		"Disappeared) against the simulator's ground truth "
+		"(PREFIX.motion.gz) among the cells the scan observed: precision, "
+		"recall and F1 of each kind summed over the scans, and the share of "
+		"walls and furniture the map flags as moving. See doc/evgrid.md.",
+		' ', EVGRID_VERSION);
+	TCLAP::SwitchArg argQuiet(
+		"q", "quiet",
+		"Print nothing but errors (the report goes only to --output).", cmd,
+		false);
+	TCLAP::ValueArg<std::string> argOutput(
+		"", "output",
+		"Also write the report's numbers to this file as 'key value' lines, "
+		"atomically (a failed run leaves an earlier file as it was).",
+		false, "", "FILE", cmd);
+	TCLAP::ValueArg<int> argTolerance(
+		"", "tolerance",
+		"A predicted cell and a truth cell of the same kind match within "
+		"this many cells (Chebyshev distance). At least 0, default 1.",
+		false, 1, "CELLS", cmd);
+	TCLAP::ValueArg<std::string> argTruth(
+		"", "truth",
+		"Required. The ground truth of what moves, PREFIX.motion.gz as "
+		"evgrid-simulate writes it beside PREFIX.rawlog.",
+		false, "", "FILE", cmd);
+	CInputArgs inputArgs(cmd);
+
+	if (const auto exitCode = parse(cmd, kScoreMotionName, argc, argv, first))
+		return exitCode;
+	options.source = inputArgs.values();
+	options.truth = argTruth.getValue();
+	if (options.truth.empty())
+		throw UsageError("missing the truth: --truth PREFIX.motion.gz");
+	options.tolerance = argTolerance.getValue();
+	requireAtLeast("--tolerance", options.tolerance, 0);
+	options.output = argOutput.getValue();
+	if (argOutput.isSet() && options.output.empty())
+		throw UsageError("--output needs a non-empty value");
+	options.quiet = argQuiet.getValue();
+	return std::nullopt;
+}
+
+/** Takes the input's 2-D scans one by one: checks each against its truth
+ * record, replays the record, inserts the scan and scores the map. */
+class CReplay
+{
+   public:
+	CReplay(
+		CEvidentialGridMap2D& map, const CMotionTruth& truth, int tolerance,
+		const std::string& inputPath, const CInputWalker& input)
+		: m_map(map),
+		  m_truth(truth),
+		  m_inputPath(inputPath),
+		  m_input(input),
+		  m_events(truth.grid(), map.insertionOptions.motionWindow),
+		  m_seen(truth.grid()),
+		  m_scorer(truth, tolerance)
+	{
+	}
+
+	void take(
+		const mrpt::obs::CObservation2DRangeScan& scan,
+		const std::optional<mrpt::poses::CPose3D>& pose)
+	{
+		const std::size_t k = m_counts.total++;
+		const auto& records = m_truth.scans();
+		if (k >= records.size())
+			throw std::runtime_error(
+				m_truth.path() + ": holds " + std::to_string(records.size()) +
+				" scans, but " + m_input.place() + " is 2-D scan " +
+				std::to_string(k) + ": not the truth of this input");
+		if (scan.timestamp == INVALID_TIMESTAMP)
+			throw std::runtime_error(
+				m_input.place() +
+				": a scan without a time stamp, which matches it to the truth");
+		const double stamp = mrpt::Clock::toDouble(scan.timestamp);
+		const double expected = m_truth.startTime() + records[k].time;
+		if (!(std::abs(stamp - expected) <= kTimeTolerance))
+			throw std::runtime_error(
+				m_truth.path() + ": scan " + std::to_string(k) + " is at " +
+				fixedTime(expected) + " s but " + m_input.place() +
+				" (2-D scan " + std::to_string(k) + ") at " +
+				fixedTime(stamp) + " s: not the truth of this input");
+		m_events.apply(k, records[k]);
+		if (!pose)
+		{
+			++m_counts.withoutPose;
+			return;
+		}
+		if (!insert(scan, *pose))
+		{
+			++m_counts.refused;
+			return;
+		}
+		++m_counts.scored;
+		m_seen.trace(scan, *pose, m_map.insertionOptions.maxRange);
+		m_scorer.score(m_map, m_seen, m_events, k, records[k].time);
+	}
+
+	/** \throws std::runtime_error if the input has fewer scans than the
+	 *  truth, or none was scored. */
+	void finish() const
+	{
+		if (m_counts.total != m_truth.scans().size())
+			throw std::runtime_error(
+				m_truth.path() + ": holds " +
+				std::to_string(m_truth.scans().size()) + " scans, but " +
+				m_inputPath + " has " + std::to_string(m_counts.total) +
+				" 2-D scans: not the truth of this input");
+		if (m_counts.scored == 0)
+			throw std::runtime_error(
+				m_truth.path() + ": no scan was scored (" +
+				std::to_string(m_counts.total) + " 2-D scans, " +
+				std::to_string(m_counts.withoutPose) + " without a pose, " +
+				std::to_string(m_counts.refused) + " refused by the map)");
+	}
+
+	const TReplayCounts& counts() const { return m_counts; }
+	const TMotionScore& score() const { return m_scorer.totals(); }
+
+   private:
+	static std::string fixedTime(double t)
+	{
+		char text[32];
+		std::snprintf(text, sizeof(text), "%.3f", t);
+		return text;
+	}
+
+	bool insert(
+		const mrpt::obs::CObservation2DRangeScan& scan,
+		const mrpt::poses::CPose3D& pose)
+	{
+		try
+		{
+			return m_map.insertObservation(scan, pose);
+		}
+		catch (const std::exception& e)
+		{
+			throw std::runtime_error(
+				m_input.place() + ": cannot insert the scan: " + describe(e));
+		}
+	}
+
+	CEvidentialGridMap2D& m_map;
+	const CMotionTruth& m_truth;
+	const std::string& m_inputPath;
+	const CInputWalker& m_input;
+	CTruthEvents m_events;
+	CObservedCells m_seen;
+	CMotionScorer m_scorer;
+	TReplayCounts m_counts;
+};
+
+void scoreMotion(const TScoreMotionOptions& options)
+{
+	// The small files first, so that their errors come before the long walk.
+	if (!options.output.empty()) checkOutputFile(options.output);
+	const std::unique_ptr<CEvidentialGridMap2D> map = createMap(options.source);
+	CPoseSource poses = createPoseSource(options.source);
+	const CMotionTruth truth = CMotionTruth::load(options.truth);
+
+	CInputWalker input(options.source.input, poses);
+	CReplay replay(
+		*map, truth, options.tolerance, options.source.input, input);
+	CProgress progress(CProgress::modeFor(options.quiet), kScoreMotionName);
+	input.walk(
+		{[] {},
+		 [&replay](const auto& scan, const auto& pose) {
+			 replay.take(scan, pose);
+		 },
+		 [&](double fraction) {
+			 progress.update(fraction, replay.counts().scored);
+		 }});
+	progress.finish();
+	replay.finish();
+
+	TScoreMotionRecord run;
+	run.poses = poses.description();
+	run.motionWindow = map->insertionOptions.motionWindow;
+	run.scans = replay.counts();
+	run.score = replay.score();
+	if (!options.output.empty())
+		mrpt_evidential::detail::writeFileAtomically(
+			options.output, [&](std::ostream& os) {
+				writeMotionKeyValues(os, options, truth, run);
+			});
+	if (!options.quiet) printMotionReport(std::cout, options, truth, run);
+}
+}  // namespace
+
+int runScoreMotion(int argc, char** argv, int first)
+{
+	TScoreMotionOptions options;
+	if (const auto exitCode = parseOptions(argc, argv, first, options))
+		return *exitCode;
+	scoreMotion(options);
+	return 0;
+}
+
+}  // namespace evgrid

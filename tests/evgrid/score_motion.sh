@@ -1,0 +1,193 @@
+# evgrid score-motion: the motion layer against evgrid-simulate's ground truth
+# on the committed room_door_box, a one-lap people scene and the static scene.
+# Checks that every key is there, that the counts and ratios agree with each
+# other and with stdout, that more tolerance never matches less, that the
+# static scene has no truth event and a map that keeps conflict flags nothing,
+# that a truth of another input, a shifted or a truncated one is an error
+# that leaves an earlier --output as it was, and the usage errors. The F1
+# scores are printed, not judged: the motion layer is still being tuned.
+source "$(dirname "$0")/lib.sh"
+
+RAWLOGS=$(dirname "$EVGRID_INI")
+room="$RAWLOGS/room_door_box"
+# The motion layer needs a map that does not keep conflict.
+sed 's/^conflictHandling=.*/conflictHandling=Normalize/' "$EVGRID_INI" >"$T/normalize.ini"
+grep -qx "conflictHandling=Normalize" "$T/normalize.ini" || fail "no conflictHandling line in $EVGRID_INI"
+run 0 "$EVGRID_SIMULATE" --scene people --laps 1 "$T/people"
+run 0 "$EVGRID_SIMULATE" --scene static --laps 1 "$T/static"
+
+# value KEY FILE: the value of a `key value` line; fails if the key is absent.
+value() {
+  awk -v k="$1" '$1 == k { sub(/^[^ ]+ /, ""); print; found = 1 } END { exit !found }' "$2" ||
+    fail "$2 has no key $1"
+}
+
+# check CONDITION WHAT VALUES...: an awk condition on the values $1, $2...
+check() {
+  local condition=$1 what=$2
+  shift 2
+  echo "$*" | awk "{ exit !($condition) }" || fail "$what: $*"
+}
+
+# ratio_of PART WHOLE: the ratio as the report writes it.
+ratio_of() {
+  if [ "$2" -eq 0 ]; then echo n/a; else awk -v p="$1" -v w="$2" 'BEGIN { printf "%.4f", p / w }'; fi
+}
+
+# check_report FILE STDOUT: every key is there, the numbers agree, and stdout
+# shows the very numbers of FILE.
+check_report() {
+  local f=$1 s=$2 key kind t r p tp m pr rc f1
+  for key in input poses config truth truth_scene truth_scans truth_grid motion_window_s \
+    tolerance_cells scans_total scans_without_pose scans_refused scans_scored \
+    observed_hit_cells observed_crossed_cells static_cells static_observed static_flagged \
+    static_flagged_pct static_scans static_mean_pct static_worst_pct static_worst_scan \
+    static_worst_time_s; do
+    value "$key" "$f" >/dev/null
+  done
+  [ "$(value scans_total "$f")" -eq $(($(value scans_without_pose "$f") + \
+    $(value scans_refused "$f") + $(value scans_scored "$f"))) ] || fail "$f: the scans do not add up"
+  [ "$(value scans_total "$f")" -eq "$(value truth_scans "$f")" ] || fail "$f: not one truth record a scan"
+  for kind in appeared disappeared; do
+    t=$(value "${kind}_truth" "$f")
+    r=$(value "${kind}_recalled" "$f")
+    p=$(value "${kind}_predicted" "$f")
+    tp=$(value "${kind}_true_positives" "$f")
+    m=$(value "${kind}_map_cells" "$f")
+    pr=$(value "${kind}_precision" "$f")
+    rc=$(value "${kind}_recall" "$f")
+    f1=$(value "${kind}_f1" "$f")
+    [ "$r" -le "$t" ] && [ "$tp" -le "$p" ] && [ "$p" -le "$m" ] ||
+      fail "$f: $kind counts out of order (truth $t recalled $r predicted $p tp $tp map $m)"
+    [ "$pr" = "$(ratio_of "$tp" "$p")" ] || fail "$f: ${kind}_precision $pr is not $tp / $p"
+    [ "$rc" = "$(ratio_of "$r" "$t")" ] || fail "$f: ${kind}_recall $rc is not $r / $t"
+    if [ "$pr" = n/a ] || [ "$rc" = n/a ]; then
+      [ "$f1" = n/a ] || fail "$f: ${kind}_f1 $f1 of an undefined ratio"
+    else
+      check '$1 >= 0 && $1 <= 1 && $2 >= 0 && $2 <= 1 && $3 >= 0 && $3 <= 1' "$f: $kind ratios outside [0, 1]" "$pr" "$rc" "$f1"
+      # F1 from the rounded P and R, within their rounding.
+      check '($1 + $2 == 0) ? $3 == 0 : ($3 - 2 * $1 * $2 / ($1 + $2))^2 < 9e-8' "$f: ${kind}_f1 is not 2PR/(P+R)" "$pr" "$rc" "$f1"
+    fi
+  done
+  # The table on stdout: the label, then appeared, then disappeared.
+  for row in "truth cells:truth" "recalled:recalled" "recall:recall" \
+    "predicted (observed):predicted" "true positives:true_positives" "precision:precision" \
+    "F1:f1" "map's cells (all):map_cells"; do
+    local label=${row%%:*} key=${row#*:}
+    [ "$(grep -F -- "  $label  " "$s" | head -n 1 | awk '{ print $(NF - 1), $NF }')" = \
+      "$(value "appeared_$key" "$f") $(value "disappeared_$key" "$f")" ] ||
+      fail "$s does not show ${key} as $f does"
+  done
+  [ "$(value static_flagged "$f")" -le "$(value static_observed "$f")" ] || fail "$f: more static cells flagged than observed"
+  [ "$(value static_flagged_pct "$f")" = "$(awk -v a="$(value static_flagged "$f")" -v b="$(value static_observed "$f")" \
+    'BEGIN { if (b == 0) print "n/a"; else printf "%.2f", 100 * a / b }')" ] || fail "$f: static_flagged_pct"
+  if [ "$(value static_scans "$f")" -gt 0 ]; then
+    check '$2 >= $1 && $2 <= 100 && $3 < $4' "$f: the worst static scan" \
+      "$(value static_mean_pct "$f")" "$(value static_worst_pct "$f")" "$(value static_worst_scan "$f")" "$(value scans_total "$f")"
+  fi
+  contains "$s" "motion window: $(value motion_window_s "$f") s (the map's motionWindow); tolerance: $(value tolerance_cells "$f") cell"
+  contains "$s" "observed cells, summed over the scans: $(value observed_hit_cells "$f") hit (a beam's end), $(value observed_crossed_cells "$f") crossed"
+  contains "$s" "  observed, summed over the scans: $(value static_observed "$f") cells, $(value static_flagged "$f") flagged"
+  contains "$s" "  overall share %: $(value static_flagged_pct "$f")"
+  contains "$s" "  mean share per scan %: $(value static_mean_pct "$f") over $(value static_scans "$f") scans"
+  contains "$s" "  worst scan %: $(value static_worst_pct "$f") at scan $(value static_worst_scan "$f") ($(value static_worst_time_s "$f") s)"
+}
+
+# score NAME PREFIX [OPTIONS...]: a run with the Normalize map, its report
+# checked and its F1 scores printed for the log.
+score() {
+  local name=$1 prefix=$2
+  shift 2
+  run 0 "$EVGRID" score-motion -c "$T/normalize.ini" -i "$prefix.rawlog" -p "$prefix.slam.txt" \
+    --truth "$prefix.motion.gz" --output "$T/$name.txt" "$@"
+  cp "$OUT" "$T/$name.stdout"
+  check_report "$T/$name.txt" "$T/$name.stdout"
+  echo "$name: F1 appeared $(value appeared_f1 "$T/$name.txt"), disappeared $(value disappeared_f1 "$T/$name.txt");" \
+    "static flagged $(value static_flagged_pct "$T/$name.txt")% (worst scan $(value static_worst_pct "$T/$name.txt")%)"
+}
+
+# 1. The room, one lap of people, the static scene.
+score room "$room"
+[ "$(value scans_scored "$T/room.txt") $(value truth_scene "$T/room.txt") $(value tolerance_cells "$T/room.txt")" = \
+  "800 room_door_box 1" ] || fail "room: not 800 scans of room_door_box scored with tolerance 1"
+[ "$(value motion_window_s "$T/room.txt")" = 2 ] || fail "room: the map's motionWindow is not the default 2 s"
+score people "$T/people"
+[ "$(value scans_scored "$T/people.txt")" -eq 400 ] || fail "people: not 400 scans scored"
+for kind in appeared disappeared; do
+  [ "$(value "${kind}_truth" "$T/people.txt")" -gt 0 ] || fail "people: no $kind truth among the observed cells"
+done
+score static "$T/static"
+for key in appeared_truth:0 disappeared_truth:0 appeared_recalled:0 appeared_recall:n/a \
+  disappeared_recall:n/a appeared_f1:n/a disappeared_f1:n/a; do
+  [ "$(value "${key%%:*}" "$T/static.txt")" = "${key#*:}" ] || fail "static: ${key%%:*} is not ${key#*:}"
+done
+
+# 2. More tolerance matches at least as much, and counts the same cells.
+score people-t0 "$T/people" --tolerance 0
+score people-t3 "$T/people" --tolerance 3
+for kind in appeared disappeared; do
+  for key in truth predicted map_cells; do
+    [ "$(value "${kind}_$key" "$T/people-t0.txt")" = "$(value "${kind}_$key" "$T/people-t3.txt")" ] ||
+      fail "the tolerance changed ${kind}_$key"
+  done
+  for key in true_positives recalled; do
+    [ "$(value "${kind}_$key" "$T/people-t0.txt")" -le "$(value "${kind}_$key" "$T/people.txt")" ] &&
+      [ "$(value "${kind}_$key" "$T/people.txt")" -le "$(value "${kind}_$key" "$T/people-t3.txt")" ] ||
+      fail "more tolerance matched fewer ${kind}_$key"
+  done
+done
+
+# 3. Deterministic, and quiet with -q.
+run 0 "$EVGRID" score-motion -q -c "$T/normalize.ini" -i "$room.rawlog" -p "$room.slam.txt" \
+  --truth "$room.motion.gz" --output "$T/again.txt"
+[ ! -s "$OUT" ] || fail "--quiet printed the report"
+cmp -s "$T/room.txt" "$T/again.txt" || fail "a second run wrote other numbers"
+
+# 4. A map that keeps conflict has no motion layer: it flags nothing.
+run 0 "$EVGRID" score-motion -c "$EVGRID_INI" -i "$room.rawlog" -p "$room.slam.txt" \
+  --truth "$room.motion.gz" --output "$T/keep.txt"
+for key in appeared_predicted:0 appeared_map_cells:0 disappeared_predicted:0 \
+  disappeared_map_cells:0 static_flagged:0 appeared_precision:n/a appeared_recall:0.0000; do
+  [ "$(value "${key%%:*}" "$T/keep.txt")" = "${key#*:}" ] || fail "Keep: ${key%%:*} is not ${key#*:}"
+done
+[ "$(value appeared_truth "$T/keep.txt")" = "$(value appeared_truth "$T/room.txt")" ] ||
+  fail "the truth depends on the map's conflict handling"
+
+# 5. A truth that is not the input's, or is damaged: exit 1 naming the file,
+#    and an earlier --output stays as it was.
+mkdir "$T/kept"
+cp "$T/room.txt" "$T/kept/report.txt"
+before=$(fingerprint "$T/kept")
+fails_with() {
+  local truth=$1 message=$2
+  run 1 "$EVGRID" score-motion -c "$T/normalize.ini" -i "$room.rawlog" --truth "$truth" --output "$T/kept/report.txt"
+  contains "$ERR" "evgrid score-motion: error: $truth: $message"
+  [ "$(fingerprint "$T/kept")" = "$before" ] || fail "a failed run changed $T/kept"
+}
+fails_with "$T/people.motion.gz" "holds 400 scans, but $room.rawlog: entry 801 is 2-D scan 400: not the truth of this input"
+gzip -dc "$room.motion.gz" | sed 's/^start 1700000000.050$/start 1700000000.150/' | gzip >"$T/shifted.motion.gz"
+fails_with "$T/shifted.motion.gz" "scan 0 is at 1700000000.150 s but $room.rawlog: entry 1 (2-D scan 0) at 1700000000.050 s"
+run 1 "$EVGRID" score-motion -i "$T/people.rawlog" --truth "$room.motion.gz"
+contains "$ERR" "evgrid score-motion: error: $room.motion.gz: holds 800 scans, but $T/people.rawlog has 400 2-D scans"
+head -c 6000 "$room.motion.gz" >"$T/cut.motion.gz"
+fails_with "$T/cut.motion.gz" "the compressed data stops early (truncated file?)"
+gzip -dc "$room.motion.gz" | awk 'NR <= 1000' | gzip >"$T/short.motion.gz"
+fails_with "$T/short.motion.gz" "line 1000: the file ends after 331 of its 800 scans (truncated?)"
+gzip -dc "$room.motion.gz" | sed '501s/^occupied [0-9]*/occupied 5/' | gzip >"$T/miscounted.motion.gz"
+fails_with "$T/miscounted.motion.gz" "line 501: more cells than the line's count"
+fails_with "$room.rawlog" "line 1: not an evgrid-simulate motion file of version 1"
+fails_with "$T/none.motion.gz" "cannot open: No such file or directory"
+
+# 6. Usage errors: exit 2 before any work.
+run 2 "$EVGRID" score-motion -i "$room.rawlog" --output "$T/x.txt"
+contains "$ERR" "missing the truth: --truth PREFIX.motion.gz"
+run 2 "$EVGRID" score-motion --truth "$room.motion.gz" --output "$T/x.txt"
+contains "$ERR" "missing the input"
+run 2 "$EVGRID" score-motion -i "$room.rawlog" --truth "$room.motion.gz" --tolerance -1 --output "$T/x.txt"
+contains "$ERR" "--tolerance must be at least 0, got -1"
+run 2 "$EVGRID" score-motion -i "$room.rawlog" --truth "$room.motion.gz" --tolerance one
+contains "$ERR" "bad value 'one' for --tolerance"
+run 2 "$EVGRID" score-motion -i "$room.rawlog" --truth "$room.motion.gz" --output ""
+contains "$ERR" "--output needs a non-empty value"
+[ ! -e "$T/x.txt" ] || fail "a usage error wrote the output"
+echo "evgrid_score_motion: OK"
