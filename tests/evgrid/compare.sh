@@ -69,12 +69,13 @@ done
 # True poses, a simulated lidar: MRPT's grid finds the held-out scans' poses
 # (all 80 when measured; 90% leaves room for changes of MRPT's defaults). Its
 # occupied cells lie on walls our map also holds (occupied or conflict), and
-# our map calls almost none of its free cells occupied.
+# our map calls few of its free cells occupied: those beside the walls, which
+# the default imprecision (0.1 m, for the pose error of real runs) covers.
 awk '{ exit !($1 >= 90) }' <<<"$(value mrpt_hit_rate_pct "$T/room.txt")" ||
   fail "MRPT's hit rate on the room is $(value mrpt_hit_rate_pct "$T/room.txt")%"
 awk '{ exit !($1 + $2 >= 85) }' <<<"$(value mrpt_occupied_ours_occupied_pct "$T/room.txt") $(value mrpt_occupied_ours_conflict_pct "$T/room.txt")" ||
   fail "our map sees few of MRPT's occupied cells as occupied or conflict"
-awk '{ exit !($1 < 6) }' <<<"$(value mrpt_free_ours_occupied_pct "$T/room.txt")" ||
+awk '{ exit !($1 < 10) }' <<<"$(value mrpt_free_ours_occupied_pct "$T/room.txt")" ||
   fail "our map calls many of MRPT's free cells occupied"
 # The same run gives the same numbers.
 run 0 "$EVGRID" compare -q -c "$EVGRID_INI" -i "$room" -p "$gt" --output "$T/again.txt"
