@@ -354,3 +354,72 @@ TEST(Numbers, MillionFusionsThroughTheCellsStayValid)
 			}
 	EXPECT_GE(fusions, 1'000'000u);
 }
+
+TEST(GridStorageEvents, RebaseKeepsRecentEventsAndDropsOldOnes)
+{
+	EvidentialGridStorage s;
+	s.reset(0, 2, 0, 1, 1.0, 2);
+	s.setKeepsConflict(false);
+	s.setEventRetention(5.0);
+	s.beginInsertion(0.0);
+	s.setEvent(0, CellEvent::Disappeared);  // at 0 s
+	s.beginInsertion(1.0);
+	double t = 1.0;
+	// Fill the table of times until it is rebased; cell 1's event is kept
+	// fresh, 2 s before each insertion.
+	std::size_t rebases = 0, previous = s.stampTimes().size();
+	while (rebases < 2)
+	{
+		t += 1.0;
+		s.beginInsertion(t);
+		if (s.stampTimes().size() < previous) ++rebases;
+		previous = s.stampTimes().size();
+		if (s.eventTime(1) < t - 2.0 || s.event(1) == CellEvent::None) s.setEvent(1, CellEvent::Appeared);
+	}
+	EXPECT_LT(s.stampTimes().size(), EvidentialGridStorage::kMaxStamps);
+	EXPECT_EQ(s.event(0), CellEvent::None) << "older than the retention";
+	EXPECT_EQ(s.event(1), CellEvent::Appeared);
+	EXPECT_GE(s.eventTime(1), t - 2.0);
+	EXPECT_LE(s.eventTime(1), t);
+}
+
+TEST(GridStorageEvents, ChangingWhatCellsKeepClearsTheWordAside)
+{
+	EvidentialGridStorage s;
+	s.reset(0, 1, 0, 1, 1.0, 1);
+	s.beginInsertion(1.0);
+	s.write(0, {0.5, 0.2, 0.3, 0.0});  // keeps conflict: the default
+	EXPECT_NEAR(s.read(0).conflict, 0.5, 1e-4);
+	s.setKeepsConflict(false);
+	EXPECT_EQ(s.read(0).conflict, 0.0);
+	EXPECT_NEAR(s.read(0).occupied, 0.6, 1e-4) << "the normal part stays";
+	EXPECT_EQ(s.event(0), CellEvent::None);
+	s.setEvent(0, CellEvent::Appeared);
+	s.setKeepsConflict(true);
+	EXPECT_EQ(s.read(0).conflict, 0.0);
+	EXPECT_EQ(s.event(0), CellEvent::None) << "a grid with conflict has no events";
+}
+
+TEST(GridStorageEvents, AssignChecksEventsAndStampBits)
+{
+	EvidentialGridStorage s;
+	const GridGeometry g{0.0, 0.0, 1.0, 1, 1};
+	QuantizedCell c;
+	c.aside = packEvent(CellEvent::Appeared, 1);
+	EXPECT_NO_THROW(s.assign(g, {c}, {0.0, 1.0}, 2, 0.0, false));
+	EXPECT_EQ(s.event(0), CellEvent::Appeared);
+	EXPECT_EQ(s.eventTime(0), 1.0);
+	c.aside = packEvent(CellEvent::Appeared, 2);  // no such time
+	EXPECT_THROW(s.assign(g, {c}, {0.0, 1.0}, 2, 0.0, false), std::invalid_argument);
+	c.aside = 0;
+	c.stamp = 0x8000;  // the bit that must be 0
+	EXPECT_THROW(s.assign(g, {c}, {0.0, 1.0}, 2, 0.0, false), std::invalid_argument);
+	c.stamp = kHeldImpact | 1;
+	EXPECT_NO_THROW(s.assign(g, {c}, {0.0, 1.0}, 2, 0.0, false));
+	EXPECT_TRUE(s.heldImpact(0));
+	// A cell of a grid without conflict above the ceiling is refused.
+	c.stamp = 0;
+	c.occupied = static_cast<std::uint16_t>(kMassScale);
+	EXPECT_THROW(s.assign(g, {c}, {0.0, 1.0}, 2, 0.0, false), std::invalid_argument);
+	EXPECT_NO_THROW(s.assign(g, {c}, {0.0, 1.0}, 2, 0.0, true));
+}

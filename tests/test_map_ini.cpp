@@ -53,6 +53,10 @@ decayRate=0.05
 horizontalTolerance=1.5
 conflictHandling=ToUnknown
 growthMargin=3
+freeMargin=0.15
+motionWindow=4.5
+motionMinConflict=0.6
+motionClearance=0.25
 )ini";
 
 mrpt::maps::CMultiMetricMap mapsFrom(const std::string& ini)
@@ -104,6 +108,10 @@ TEST(MapIni, CreatedFromIniWithEveryOption)
 	EXPECT_NEAR(o.horizontalTolerance, 1.5 * M_PI / 180, 1e-12);
 	EXPECT_EQ(o.conflictHandling, ConflictHandling::ToUnknown);
 	EXPECT_EQ(o.growthMargin, 3.0);
+	EXPECT_EQ(o.freeMargin, 0.15);
+	EXPECT_EQ(o.motionWindow, 4.5);
+	EXPECT_EQ(o.motionMinConflict, 0.6);
+	EXPECT_EQ(o.motionClearance, 0.25);
 }
 
 TEST(MapIni, DefaultsWhenSectionsAreAbsent)
@@ -134,6 +142,10 @@ TEST(MapIni, InsertionOptionsRoundTripThroughIni)
 	o.horizontalTolerance = 0.0456;
 	o.conflictHandling = ConflictHandling::Normalize;
 	o.growthMargin = 0.5;
+	o.freeMargin = 0.123;
+	o.motionWindow = 1.0 / 7.0;
+	o.motionMinConflict = 0.45;
+	o.motionClearance = 0.0;
 	mrpt::config::CConfigFileMemory ini;
 	o.saveToConfigFile(ini, "opts");
 	CEvidentialGridMap2D::TInsertionOptions back;
@@ -147,10 +159,15 @@ TEST(MapIni, InsertionOptionsRoundTripThroughIni)
 	EXPECT_NEAR(back.horizontalTolerance, o.horizontalTolerance, 1e-15);
 	EXPECT_EQ(back.decayRate, o.decayRate);
 	EXPECT_EQ(back.fusionRule, o.fusionRule);
+	EXPECT_EQ(back.freeMargin, o.freeMargin);
+	EXPECT_EQ(back.motionWindow, o.motionWindow);
+	EXPECT_EQ(back.motionMinConflict, o.motionMinConflict);
+	EXPECT_EQ(back.motionClearance, o.motionClearance);
 	for (const char* key :
 		 {"sensorModel", "muF", "muO", "imprecision", "imprecisionProfile",
-		  "sectorWidth", "maxRange", "invalidRangesAsFree", "fusionRule",
-		  "decayRate", "horizontalTolerance", "conflictHandling", "growthMargin"})
+		  "sectorWidth", "maxRange", "invalidRangesAsFree", "freeMargin", "fusionRule",
+		  "decayRate", "horizontalTolerance", "conflictHandling", "growthMargin",
+		  "motionWindow", "motionMinConflict", "motionClearance"})
 		EXPECT_NE(a.str().find(key), std::string::npos) << key;
 }
 
@@ -172,6 +189,11 @@ TEST(MapIni, InvalidValuesAreRejectedNamingKeyAndValue)
 		{"insertOpts", "horizontalTolerance=100"},
 		{"insertOpts", "invalidRangesAsFree=maybe"},
 		{"insertOpts", "growthMargin=nan"},
+		{"insertOpts", "freeMargin=-0.1"},
+		{"insertOpts", "motionWindow=0"},
+		{"insertOpts", "motionWindow=inf"},
+		{"insertOpts", "motionMinConflict=1.5"},
+		{"insertOpts", "motionClearance=-1"},
 		{"creationOpts", "resolution=0"},
 		{"creationOpts", "resolution=-0.1"},
 		{"creationOpts", "min_x=20"},
@@ -227,6 +249,10 @@ TEST(BadOptions, InvalidInsertionOptionsStopInsertionNamingTheField)
 		{"sectorWidth", [](Options& o) { o.sectorWidth = 7.0; }},
 		{"horizontalTolerance", [](Options& o) { o.horizontalTolerance = -1.0; }},
 		{"growthMargin", [](Options& o) { o.growthMargin = kNaN; }},
+		{"freeMargin", [](Options& o) { o.freeMargin = kInf; }},
+		{"motionWindow", [](Options& o) { o.motionWindow = -1.0; }},
+		{"motionMinConflict", [](Options& o) { o.motionMinConflict = 0.0; }},
+		{"motionClearance", [](Options& o) { o.motionClearance = kNaN; }},
 		{"fusionRule", [](Options& o) { o.fusionRule = static_cast<FusionRule>(17); }},
 		{"sensorModel", [](Options& o) { o.sensorModel = static_cast<SensorModel>(9); }},
 		{"conflictHandling",
