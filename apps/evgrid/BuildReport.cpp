@@ -117,6 +117,7 @@ void writeSummary(
 	   << "  latest time: " << std::fixed << std::setprecision(6)
 	   << map.latestTime() << " s\n";
 	printDecisionCounts(os, run.decisions, map.geometry().cellCount());
+	printMotionCounts(os, map);
 	os << "\n";
 	writeTiming(os, run);
 	os << "\n";
@@ -142,8 +143,9 @@ void printConsoleSummary(
 	   << "map: " << map.getSizeX() << " x " << map.getSizeY() << " cells of "
 	   << mrpt_evidential::detail::shortestText(map.getResolution()) << " m; free " << d.free
 	   << ", occupied " << d.occupied << ", unknown " << d.unknown
-	   << ", conflict " << d.conflict << "\n"
-	   << "pictures: ";
+	   << ", conflict " << d.conflict << "\n";
+	printMotionCounts(os, map);
+	os << "pictures: ";
 	const char* separator = "";
 	for (const char* name : CEvidentialGridMap2D::pictureNames())
 	{

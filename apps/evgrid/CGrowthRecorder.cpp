@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
+#include <utility>
 
 #include "COutputFolder.h"
 #include "CScopedTimer.h"
@@ -34,24 +35,31 @@ void CGrowthRecorder::afterInsertion(
 	if (!frame && !video) return;
 
 	CScopedTimer t(m_writingSeconds);
-	mrpt::img::CImage picture;
-	map.getAsEvidentialImage(picture);
+	using Map = mrpt_evidential::CEvidentialGridMap2D;
+	mrpt::img::CImage evidential, motion;
+	map.getAsEvidentialImage(evidential);
+	map.getAsMotionImage(motion);
 	if (frame)
 	{
-		char name[64];
-		std::snprintf(
-			name, sizeof(name), "frame_%06zu_%s", inserted,
-			mrpt_evidential::CEvidentialGridMap2D::pictureNames()[0]);
 		const std::string folder = m_out.staged("frames");
 		std::filesystem::create_directories(folder);
-		const std::string path = folder + "/" + name;
-		if (!picture.saveToFile(path))
-			throw std::runtime_error(path + ": cannot write the picture");
+		for (const auto& [picture, name] :
+			 {std::pair{&evidential, Map::pictureNames()[0]},
+			  std::pair{&motion, Map::pictureNames()[3]}})
+		{
+			char file[64];
+			std::snprintf(file, sizeof(file), "frame_%06zu_%s", inserted, name);
+			const std::string path = folder + "/" + file;
+			if (!picture->saveToFile(path))
+				throw std::runtime_error(path + ": cannot write the picture");
+		}
 		++m_frames;
 	}
 	if (video)
 	{
-		m_animation->add(picture);
+		// Moving things as they move; a map that keeps conflict has no motion
+		// layer, and its conflict shows in the evidential colours.
+		m_animation->add(map.storage().keepsConflict() ? evidential : motion);
 		++m_animationFrames;
 	}
 }

@@ -64,6 +64,15 @@ void printCell(const CEvidentialGridMap2D& map, const TPoint& p)
 			  << m.occupied << "  m(Omega) " << m.unknown << "\n"
 			  << "  BetP " << map.getCellBetP(p.x, p.y) << "  decision "
 			  << decisionName(map.getCellDecision(p.x, p.y)) << "\n";
+	const mrpt_evidential::Motion motion = map.getCellMotion(p.x, p.y);
+	std::cout << "  motion " << mrpt_evidential::motionName(motion);
+	if (motion != mrpt_evidential::Motion::None)
+		std::cout << " at " << map.getCellMotionTime(p.x, p.y) << " s ("
+				  << map.latestTime() - map.getCellMotionTime(p.x, p.y)
+				  << " s before the latest insertion)";
+	else if (map.storage().keepsConflict())
+		std::cout << " (the map keeps conflict: it has no motion layer)";
+	std::cout << "\n";
 }
 
 void printMap(const std::string& path, const CEvidentialGridMap2D& map)
@@ -82,6 +91,7 @@ void printMap(const std::string& path, const CEvidentialGridMap2D& map)
 				  << " UTC)\n";
 	printDecisionCounts(
 		std::cout, map.countDecisions(), map.geometry().cellCount());
+	printMotionCounts(std::cout, map);
 	std::cout << "\n";
 	printMapOptions(std::cout, map);
 }

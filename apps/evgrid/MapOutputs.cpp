@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include <mrpt_evidential/support/NumberText.h>
+
 using mrpt_evidential::CEvidentialGridMap2D;
 
 namespace evgrid
@@ -71,6 +73,20 @@ void printDecisionCounts(
 	line("conflict", counts.conflict);
 	os.flags(flags);
 	os.precision(precision);
+}
+
+void printMotionCounts(std::ostream& os, const CEvidentialGridMap2D& map)
+{
+	if (map.storage().keepsConflict())
+	{
+		os << "motion: none (the map keeps conflict: no motion layer)\n";
+		return;
+	}
+	const auto counts = map.countMotion();
+	os << "motion, within the last "
+	   << mrpt_evidential::detail::shortestText(map.insertionOptions.motionWindow)
+	   << " s of data time: appeared " << counts.appeared << " cells, disappeared "
+	   << counts.disappeared << " cells\n";
 }
 
 void printMapOptions(std::ostream& os, const CEvidentialGridMap2D& map)

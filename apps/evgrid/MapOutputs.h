@@ -32,6 +32,9 @@ void printDecisionCounts(
 	std::ostream& os,
 	const mrpt_evidential::CEvidentialGridMap2D::TDecisionCounts& counts,
 	std::size_t cellCount);
+/** One line: the cells the motion layer flags (or that the map has none). */
+void printMotionCounts(
+	std::ostream& os, const mrpt_evidential::CEvidentialGridMap2D& map);
 
 /** "options:" and the map's insertion and likelihood options as .ini
  * sections. */

@@ -31,6 +31,7 @@ run 0 "$EVGRID" inspect "$map" --cell "$fx,$fy" --cell "$ox,$oy" --cell 2,0
 lacks "$OUT" "cells by decision"
 [ "$(grep -c 'decision Free' "$OUT")" -eq 2 ] || fail "the free cells do not read Free"
 [ "$(grep -c 'decision Occupied' "$OUT")" -eq 1 ] || fail "the occupied cell does not read Occupied"
+[ "$(grep -c "^  motion None$" "$OUT")" -eq 3 ] || fail "a static map read with motion: $(cat "$OUT")"
 contains "$OUT" "m(empty) "
 contains "$OUT" "m(Omega) "
 contains "$OUT" "BetP 0.0"
