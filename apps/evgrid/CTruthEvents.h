@@ -2,50 +2,45 @@
 #pragma once
 
 #include <cstddef>
-#include <vector>
+#include <memory>
 
 #include "CMotionTruth.h"
 
 namespace evgrid
 {
-/** Replays the truth's scan records in order and keeps, per cell, when its
- * current covering by a moving thing began and when a thing last left it,
- * so that the events of the latest scan can be asked for. */
+class CObservedCells;
+
+/** When an event of the truth counts as having happened: Observed, at the
+ * first scan that saw it, and only if the scans could tell (what the map can
+ * know: the default); Physical, when the simulator says it happened. */
+enum class TruthTimes
+{
+	Observed,
+	Physical
+};
+
+/** Replays the truth's scan records in order, with what the scored scans
+ * observed, and tells which cells hold an event as of the latest scan. The
+ * scorer asks appeared() of that scan's hit cells only and disappeared() of
+ * its crossed cells only. */
 class CTruthEvents
 {
    public:
 	/** `window`: the map's motionWindow, seconds. */
-	CTruthEvents(const TTruthGrid& grid, double window);
+	static std::unique_ptr<CTruthEvents> create(
+		TruthTimes times, const TTruthGrid& grid, double window);
+	virtual ~CTruthEvents() = default;
 
 	/** Applies scan k's record; scans come in order from 0. */
-	void apply(std::size_t k, const TTruthScan& scan);
+	virtual void apply(std::size_t k, const TTruthScan& scan) = 0;
+	/** What the latest scan observed, when it is scored (after apply()). */
+	virtual void observe(const CObservedCells& seen) = 0;
 
-	/** Something appeared in `cell` as of the latest scan: a moving thing
-	 * covers it, its current covering began (at the first scan of the
-	 * current run of listings) at most `window` before the scan, and not at
-	 * scan 0 (a thing there from the start was never seen free). */
-	bool appeared(int cell) const
-	{
-		return m_lastCovered[cell] == m_scan && m_onsetScan[cell] > 0 &&
-			m_time - m_onset[cell] <= m_window;
-	}
-	/** Something left `cell` at most `window` before the latest scan (and
-	 * did not cover it again since). */
-	bool disappeared(int cell) const
-	{
-		return m_leftAt[cell] >= 0 && m_time - m_leftAt[cell] <= m_window;
-	}
-
-   private:
-	/** The window plus a margin for the times' rounding to 0.01 s. */
-	double m_window;
-	long m_scan = -1;
-	double m_time = 0;
-	/** Per cell: the latest scan listing it occupied (-1: none), the scan and
-	 * time its current run of listings began, and when it was last left
-	 * (-1: not left since last covered). */
-	std::vector<long> m_lastCovered, m_onsetScan;
-	std::vector<double> m_onset, m_leftAt;
+	/** Something appeared in `cell` within the window, as of the latest
+	 * scan. */
+	virtual bool appeared(int cell) const = 0;
+	/** Something left `cell` within the window, as of the latest scan. */
+	virtual bool disappeared(int cell) const = 0;
 };
 
 }  // namespace evgrid

@@ -66,6 +66,14 @@ std::optional<int> parseOptions(
 		"Required. The ground truth of what moves, PREFIX.motion.gz as "
 		"evgrid-simulate writes it beside PREFIX.rawlog.",
 		false, "", "FILE", cmd);
+	TCLAP::ValueArg<std::string> argTruthTimes(
+		"", "truth-times",
+		"How the truth dates its events: 'observed' (default), at the first "
+		"scan that saw the thing appear or go, counting only what the scans "
+		"could tell (a cell seen free before it was hit, a cell hit before it "
+		"was seen free again); 'physical', when the simulator says it "
+		"happened, seen or not.",
+		false, "observed", "observed|physical", cmd);
 	CInputArgs inputArgs(cmd);
 
 	if (const auto exitCode = parse(cmd, kScoreMotionName, argc, argv, first))
@@ -74,6 +82,12 @@ std::optional<int> parseOptions(
 	options.truth = argTruth.getValue();
 	if (options.truth.empty())
 		throw UsageError("missing the truth: --truth PREFIX.motion.gz");
+	const std::string& times = argTruthTimes.getValue();
+	if (times == "observed") options.truthTimes = TruthTimes::Observed;
+	else if (times == "physical") options.truthTimes = TruthTimes::Physical;
+	else
+		throw UsageError(
+			"--truth-times must be observed or physical, got '" + times + "'");
 	options.tolerance = argTolerance.getValue();
 	requireAtLeast("--tolerance", options.tolerance, 0);
 	options.output = argOutput.getValue();
@@ -89,15 +103,17 @@ class CReplay
 {
    public:
 	CReplay(
-		CEvidentialGridMap2D& map, const CMotionTruth& truth, int tolerance,
-		const std::string& inputPath, const CInputWalker& input)
+		CEvidentialGridMap2D& map, const CMotionTruth& truth,
+		const TScoreMotionOptions& options, const CInputWalker& input)
 		: m_map(map),
 		  m_truth(truth),
-		  m_inputPath(inputPath),
+		  m_inputPath(options.source.input),
 		  m_input(input),
-		  m_events(truth.grid(), map.insertionOptions.motionWindow),
+		  m_events(CTruthEvents::create(
+			  options.truthTimes, truth.grid(),
+			  map.insertionOptions.motionWindow)),
 		  m_seen(truth.grid()),
-		  m_scorer(truth, tolerance)
+		  m_scorer(truth, options.tolerance)
 	{
 	}
 
@@ -124,7 +140,7 @@ class CReplay
 				fixedTime(expected) + " s but " + m_input.place() +
 				" (2-D scan " + std::to_string(k) + ") at " +
 				fixedTime(stamp) + " s: not the truth of this input");
-		m_events.apply(k, records[k]);
+		m_events->apply(k, records[k]);
 		if (!pose)
 		{
 			++m_counts.withoutPose;
@@ -137,7 +153,8 @@ class CReplay
 		}
 		++m_counts.scored;
 		m_seen.trace(scan, *pose, m_map.insertionOptions.maxRange);
-		m_scorer.score(m_map, m_seen, m_events, k, records[k].time);
+		m_events->observe(m_seen);
+		m_scorer.score(m_map, m_seen, *m_events, k, records[k].time);
 	}
 
 	/** \throws std::runtime_error if the input has fewer scans than the
@@ -188,7 +205,7 @@ class CReplay
 	const CMotionTruth& m_truth;
 	const std::string& m_inputPath;
 	const CInputWalker& m_input;
-	CTruthEvents m_events;
+	std::unique_ptr<CTruthEvents> m_events;
 	CObservedCells m_seen;
 	CMotionScorer m_scorer;
 	TReplayCounts m_counts;
@@ -203,8 +220,7 @@ void scoreMotion(const TScoreMotionOptions& options)
 	const CMotionTruth truth = CMotionTruth::load(options.truth);
 
 	CInputWalker input(options.source.input, poses);
-	CReplay replay(
-		*map, truth, options.tolerance, options.source.input, input);
+	CReplay replay(*map, truth, options, input);
 	CProgress progress(CProgress::modeFor(options.quiet), kScoreMotionName);
 	input.walk(
 		{[] {},

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "CTruthEvents.h"
 #include "InputOptions.h"
 
 namespace evgrid
@@ -11,11 +12,18 @@ namespace evgrid
 /** What messages and the report call the subcommand. */
 constexpr const char* kScoreMotionName = "evgrid score-motion";
 
+/** The value of --truth-times that selects `times`. */
+inline const char* truthTimesName(TruthTimes times)
+{
+	return times == TruthTimes::Physical ? "physical" : "observed";
+}
+
 struct TScoreMotionOptions
 {
 	TInputOptions source;
 	/** The motion truth, PREFIX.motion.gz. */
 	std::string truth;
+	TruthTimes truthTimes = TruthTimes::Observed;
 	/** Cells (Chebyshev) within which a prediction and a truth cell match,
 	 * >= 0. */
 	int tolerance = 1;

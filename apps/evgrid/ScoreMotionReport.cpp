@@ -48,6 +48,15 @@ struct TRatios
 	}
 };
 
+/** What the console says of each dating. */
+std::string truthTimesText(TruthTimes times)
+{
+	return std::string(truthTimesName(times)) +
+		(times == TruthTimes::Physical
+			 ? " (each event from when it happened, seen or not)"
+			 : " (each event from the first scan that saw it)");
+}
+
 std::string percent(double share) { return fixed(100 * share, 2); }
 std::string overallStaticPct(const TStaticScore& s)
 {
@@ -112,6 +121,7 @@ void printMotionReport(
 	   << "motion window: " << shortestText(run.motionWindow)
 	   << " s (the map's motionWindow); tolerance: " << options.tolerance
 	   << (options.tolerance == 1 ? " cell" : " cells") << " (Chebyshev)\n"
+	   << "truth times: " << truthTimesText(options.truthTimes) << "\n"
 	   << "observed cells, summed over the scans: " << s.hitCells
 	   << " hit (a beam's end), " << s.crossedCells << " crossed\n\n";
 
@@ -154,6 +164,7 @@ void writeMotionKeyValues(
 	   << "truth_grid " << truthGrid(truth.grid()) << "\n"
 	   << "motion_window_s " << shortestText(run.motionWindow) << "\n"
 	   << "tolerance_cells " << options.tolerance << "\n"
+	   << "truth_times " << truthTimesName(options.truthTimes) << "\n"
 	   << "scans_total " << n.total << "\n"
 	   << "scans_without_pose " << n.withoutPose << "\n"
 	   << "scans_refused " << n.refused << "\n"

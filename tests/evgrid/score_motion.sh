@@ -2,7 +2,9 @@
 # on the committed room_door_box, a one-lap people scene and the static scene.
 # Checks that every key is there, that the counts and ratios agree with each
 # other and with stdout, that more tolerance never matches less, that the
-# static scene has no truth event and a map that keeps conflict flags nothing,
+# static scene has no truth event under either dating of the truth, that the
+# two datings differ on people and change the truth only, that a map that
+# keeps conflict flags nothing,
 # that a truth of another input, a shifted or a truncated one is an error
 # that leaves an earlier --output as it was, and the usage errors. The F1
 # scores are printed, not judged: the motion layer is still being tuned.
@@ -39,7 +41,7 @@ ratio_of() {
 check_report() {
   local f=$1 s=$2 key kind t r p tp m pr rc f1
   for key in input poses config truth truth_scene truth_scans truth_grid motion_window_s \
-    tolerance_cells scans_total scans_without_pose scans_refused scans_scored \
+    tolerance_cells truth_times scans_total scans_without_pose scans_refused scans_scored \
     observed_hit_cells observed_crossed_cells static_cells static_observed static_flagged \
     static_flagged_pct static_scans static_mean_pct static_worst_pct static_worst_scan \
     static_worst_time_s; do
@@ -86,6 +88,7 @@ check_report() {
       "$(value static_mean_pct "$f")" "$(value static_worst_pct "$f")" "$(value static_worst_scan "$f")" "$(value scans_total "$f")"
   fi
   contains "$s" "motion window: $(value motion_window_s "$f") s (the map's motionWindow); tolerance: $(value tolerance_cells "$f") cell"
+  contains "$s" "truth times: $(value truth_times "$f") (each event from "
   contains "$s" "observed cells, summed over the scans: $(value observed_hit_cells "$f") hit (a beam's end), $(value observed_crossed_cells "$f") crossed"
   contains "$s" "  observed, summed over the scans: $(value static_observed "$f") cells, $(value static_flagged "$f") flagged"
   contains "$s" "  overall share %: $(value static_flagged_pct "$f")"
@@ -122,7 +125,30 @@ for key in appeared_truth:0 disappeared_truth:0 appeared_recalled:0 appeared_rec
   [ "$(value "${key%%:*}" "$T/static.txt")" = "${key#*:}" ] || fail "static: ${key%%:*} is not ${key#*:}"
 done
 
-# 2. More tolerance matches at least as much, and counts the same cells.
+# 2. The datings of the truth: observed by default, physical on demand. The
+#    static scene has no event under either; on people they give other truth
+#    and the same predictions.
+[ "$(value truth_times "$T/people.txt")" = observed ] || fail "people: the default dating is not observed"
+score people-observed "$T/people" --truth-times observed
+cmp -s "$T/people.txt" "$T/people-observed.txt" || fail "--truth-times observed is not the default"
+score people-physical "$T/people" --truth-times physical
+[ "$(value truth_times "$T/people-physical.txt")" = physical ] || fail "people: --truth-times physical not reported"
+for kind in appeared disappeared; do
+  [ "$(value "${kind}_truth" "$T/people-physical.txt")" -gt 0 ] || fail "people, physical: no $kind truth"
+  for key in predicted map_cells; do
+    [ "$(value "${kind}_$key" "$T/people.txt")" = "$(value "${kind}_$key" "$T/people-physical.txt")" ] ||
+      fail "the dating changed ${kind}_$key"
+  done
+done
+[ "$(value appeared_truth "$T/people.txt") $(value disappeared_truth "$T/people.txt")" != \
+  "$(value appeared_truth "$T/people-physical.txt") $(value disappeared_truth "$T/people-physical.txt")" ] ||
+  fail "people: the observed and physical truths have the same counts"
+score static-physical "$T/static" --truth-times physical
+for key in appeared_truth:0 disappeared_truth:0; do
+  [ "$(value "${key%%:*}" "$T/static-physical.txt")" = "${key#*:}" ] || fail "static, physical: ${key%%:*} is not ${key#*:}"
+done
+
+# 3. More tolerance matches at least as much, and counts the same cells.
 score people-t0 "$T/people" --tolerance 0
 score people-t3 "$T/people" --tolerance 3
 for kind in appeared disappeared; do
@@ -137,13 +163,13 @@ for kind in appeared disappeared; do
   done
 done
 
-# 3. Deterministic, and quiet with -q.
+# 4. Deterministic, and quiet with -q.
 run 0 "$EVGRID" score-motion -q -c "$T/normalize.ini" -i "$room.rawlog" -p "$room.slam.txt" \
   --truth "$room.motion.gz" --output "$T/again.txt"
 [ ! -s "$OUT" ] || fail "--quiet printed the report"
 cmp -s "$T/room.txt" "$T/again.txt" || fail "a second run wrote other numbers"
 
-# 4. A map that keeps conflict has no motion layer: it flags nothing.
+# 5. A map that keeps conflict has no motion layer: it flags nothing.
 sed 's/^conflictHandling=.*/conflictHandling=Keep/' "$EVGRID_INI" >"$T/keep.ini"
 run 0 "$EVGRID" score-motion -c "$T/keep.ini" -i "$room.rawlog" -p "$room.slam.txt" \
   --truth "$room.motion.gz" --output "$T/keep.txt"
@@ -154,7 +180,7 @@ done
 [ "$(value appeared_truth "$T/keep.txt")" = "$(value appeared_truth "$T/room.txt")" ] ||
   fail "the truth depends on the map's conflict handling"
 
-# 5. A truth that is not the input's, or is damaged: exit 1 naming the file,
+# 6. A truth that is not the input's, or is damaged: exit 1 naming the file,
 #    and an earlier --output stays as it was.
 mkdir "$T/kept"
 cp "$T/room.txt" "$T/kept/report.txt"
@@ -179,7 +205,7 @@ fails_with "$T/miscounted.motion.gz" "line 501: more cells than the line's count
 fails_with "$room.rawlog" "line 1: not an evgrid-simulate motion file of version 1"
 fails_with "$T/none.motion.gz" "cannot open: No such file or directory"
 
-# 6. Usage errors: exit 2 before any work.
+# 7. Usage errors: exit 2 before any work.
 run 2 "$EVGRID" score-motion -i "$room.rawlog" --output "$T/x.txt"
 contains "$ERR" "missing the truth: --truth PREFIX.motion.gz"
 run 2 "$EVGRID" score-motion --truth "$room.motion.gz" --output "$T/x.txt"
@@ -188,6 +214,8 @@ run 2 "$EVGRID" score-motion -i "$room.rawlog" --truth "$room.motion.gz" --toler
 contains "$ERR" "--tolerance must be at least 0, got -1"
 run 2 "$EVGRID" score-motion -i "$room.rawlog" --truth "$room.motion.gz" --tolerance one
 contains "$ERR" "bad value 'one' for --tolerance"
+run 2 "$EVGRID" score-motion -i "$room.rawlog" --truth "$room.motion.gz" --truth-times seen --output "$T/x.txt"
+contains "$ERR" "--truth-times must be observed or physical, got 'seen'"
 run 2 "$EVGRID" score-motion -i "$room.rawlog" --truth "$room.motion.gz" --output ""
 contains "$ERR" "--output needs a non-empty value"
 [ ! -e "$T/x.txt" ] || fail "a usage error wrote the output"
