@@ -305,8 +305,8 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 		/** `motionClearance`: metres; a change closer than this to static
 		 * structure (cells that lean occupied and are not themselves moving)
 		 * is taken for the error of the robot's pose, not for motion,
-		 * [0, 10], default 0.15. */
-		double motionClearance = 0.15;
+		 * [0, 10], default 0.1. */
+		double motionClearance = 0.10;
 
 		/** Reads the keys above from `section`; absent keys keep their value.
 		 * \throws std::invalid_argument naming the key and value of the first

@@ -12,10 +12,11 @@ bool leansOccupied(const Mass& m) { return m.occupied > m.free && m.occupied >= 
 }  // namespace
 
 void CMotionDetector::afterFusionOfEventCell(
-	EvidentialGridStorage& grid, std::size_t idx, CellEvent e, const Mass& observed)
+	EvidentialGridStorage& grid, std::size_t idx, CellEvent e, const Mass& observed,
+	bool impact)
 {
 	const bool seenFree = observed.free > observed.occupied;
-	const bool seenOccupied = observed.occupied > observed.free;
+	const bool seenOccupied = impact && observed.occupied > observed.free;
 	if ((e == CellEvent::Appeared || e == CellEvent::Leaving) && seenFree)
 		m_candidates.push_back({idx, CellEvent::Disappeared});
 	else if (e == CellEvent::Disappeared && seenOccupied)
@@ -35,7 +36,8 @@ bool CMotionDetector::nearStaticStructure(
 		for (int x = std::max(0, cx - r); x <= std::min(g.sizeX - 1, cx + r); ++x)
 		{
 			const std::size_t n = g.index(x, y);
-			if (n == idx || !leansOccupied(grid.read(n))) continue;
+			// The imprecise model's spread around impacts is not structure.
+			if (n == idx || !grid.heldImpact(n) || !leansOccupied(grid.read(n))) continue;
 			const CellEvent e = grid.event(n);
 			const bool moving = e == CellEvent::Leaving ||
 				(e == CellEvent::Appeared && isRecent(grid, n));
@@ -55,18 +57,22 @@ void CMotionDetector::settle(EvidentialGridStorage& grid) const
 				grid.setEvent(c.index, CellEvent::Appeared);
 			continue;
 		}
-		if (leansOccupied(grid.read(c.index)))
+		if (!nearStaticStructure(grid, c.index))
 		{
-			// Evidence still says occupied: remember when this began.
-			if (before != CellEvent::Leaving) grid.setEvent(c.index, CellEvent::Leaving);
-			continue;
+			// Nothing stands beside it that could explain a ray through it.
+			if (before == CellEvent::Leaving)
+				grid.setEventKeepingTime(c.index, CellEvent::Disappeared);
+			else
+				grid.setEvent(c.index, CellEvent::Disappeared);
 		}
-		if (nearStaticStructure(grid, c.index))
-			grid.setEvent(c.index, CellEvent::None);
-		else if (before == CellEvent::Leaving)
-			grid.setEventKeepingTime(c.index, CellEvent::Disappeared);
+		else if (leansOccupied(grid.read(c.index)))
+		{
+			// Beside structure and still leaning occupied: a ray may graze a
+			// wall. Remember when this began.
+			if (before != CellEvent::Leaving) grid.setEvent(c.index, CellEvent::Leaving);
+		}
 		else
-			grid.setEvent(c.index, CellEvent::Disappeared);
+			grid.setEvent(c.index, CellEvent::None);
 	}
 }
 

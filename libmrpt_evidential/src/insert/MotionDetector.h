@@ -28,14 +28,15 @@ struct TMotionRules
  * them once every cell of the scan is fused (two phases, so that a decision
  * sees the whole scan, and every cell is fused once).
  *
- * - Something appeared: a cell seen free is now occupied (conflict
+ * - Something appeared: a cell seen free now holds a beam's end (conflict
  *   before(F) observed(O) of at least minConflict), away from static
- *   structure (a cell that leans occupied and is not itself a recent
- *   arrival or leaving).
- * - Something left: a cell that leaned occupied is seen free. Until its
- *   evidence leans free it is only Leaving (a ray that grazes a wall is not
- *   a wall that left); then it is Disappeared, dated from the first free
- *   sight, if it is away from static structure. */
+ *   structure (a cell that held beams' ends, leans occupied and is not
+ *   itself a recent arrival or leaving).
+ * - Something left: a cell that leaned occupied and held beams' ends is
+ *   seen free, away from static structure. Beside structure, a ray may graze
+ *   a wall: while its evidence still leans occupied the cell is only Leaving
+ *   (not reported), and a disappearance found later is dated from the first
+ *   free sight. */
 class CMotionDetector
 {
    public:
@@ -46,17 +47,20 @@ class CMotionDetector
 	}
 
 	/** After cell idx of `grid` has fused `observed`, with that fusion's
-	 * conflict split. */
+	 * conflict split; `impact`: a beam of the scan ended in the cell. */
 	void afterFusion(
 		EvidentialGridStorage& grid, std::size_t idx, const ConflictSplit& split,
-		const Mass& observed)
+		const Mass& observed, bool impact)
 	{
-		if (split.appeared >= m_rules.minConflict)
+		// Something appears where a beam ends, not in the cells around it
+		// that the sensor model's imprecision reaches; something leaves a
+		// cell that beams ended in.
+		if (impact && split.appeared >= m_rules.minConflict)
 			m_candidates.push_back({idx, CellEvent::Appeared});
-		else if (split.disappeared >= m_rules.minConflict)
+		else if (split.disappeared >= m_rules.minConflict && grid.heldImpact(idx))
 			m_candidates.push_back({idx, CellEvent::Disappeared});
 		else if (const CellEvent e = grid.event(idx); e != CellEvent::None)
-			afterFusionOfEventCell(grid, idx, e, observed);
+			afterFusionOfEventCell(grid, idx, e, observed, impact);
 	}
 
 	/** Settles the candidates of the scan. */
@@ -68,9 +72,10 @@ class CMotionDetector
 	 * again; a leaving cell seen occupied stays. */
 	void afterFusionOfEventCell(
 		EvidentialGridStorage& grid, std::size_t idx, CellEvent e,
-		const Mass& observed);
+		const Mass& observed, bool impact);
 	/** True when a cell within clearanceCells of idx (idx excluded) is static
-	 * structure. */
+	 * structure: it held beams' ends, leans occupied, and is not a recent
+	 * arrival or leaving. */
 	bool nearStaticStructure(const EvidentialGridStorage& grid, std::size_t idx) const;
 	bool isRecent(const EvidentialGridStorage& grid, std::size_t idx) const
 	{

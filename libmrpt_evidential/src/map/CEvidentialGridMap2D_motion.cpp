@@ -33,11 +33,11 @@ void CEvidentialGridMap2D::fuseWithMotion(const CScanImpacts& impacts)
 	const Mass& uniform = transform.uniformMass();
 	auto hits = impacts.cursor();
 
-	const auto single = [&](std::size_t idx, const Mass& observed) {
+	const auto single = [&](std::size_t idx, const Mass& observed, bool impact) {
 		const ConflictSplit split = dempster
 			? m_grid.fuseNormalized(idx, observed)
 			: m_grid.fuse(idx, observed, rule, handling);
-		motion.afterFusion(m_grid, idx, split, observed);
+		motion.afterFusion(m_grid, idx, split, observed, impact);
 	};
 	// A run of the free mass w finds an event only in a cell that already
 	// has one, or whose n(O) w reaches motionMinConflict.
@@ -51,7 +51,8 @@ void CEvidentialGridMap2D::fuseWithMotion(const CScanImpacts& impacts)
 				m_grid.fuseSimpleFree<decltype(decays)::value, false>(
 					idx, static_cast<float>(w));
 		else
-			for (std::size_t idx = first; idx < first + count; ++idx) single(idx, uniform);
+			for (std::size_t idx = first; idx < first + count; ++idx)
+				single(idx, uniform, false);
 	};
 	const auto fuseAll = [&](auto decays) {
 		transform.forEachInformedCell(
@@ -59,7 +60,7 @@ void CEvidentialGridMap2D::fuseWithMotion(const CScanImpacts& impacts)
 			[&](std::size_t idx, const Mass& observed) {
 				const double hit = hits.occupiedAt(idx);
 				if (hit > 0.0) m_grid.markImpact(idx);
-				single(idx, hit > 0.0 ? withImpact(observed, hit) : observed);
+				single(idx, hit > 0.0 ? withImpact(observed, hit) : observed, hit > 0.0);
 			},
 			[&](std::size_t first, std::size_t count) {
 				// Cut around the impact cells the run holds.
@@ -70,7 +71,7 @@ void CEvidentialGridMap2D::fuseWithMotion(const CScanImpacts& impacts)
 					if (hit > first) fuseRun(decays, first, hit - first);
 					if (hit == end) break;
 					m_grid.markImpact(hit);
-					single(hit, withImpact(uniform, hits.occupiedAt(hit)));
+					single(hit, withImpact(uniform, hits.occupiedAt(hit)), true);
 					first = hit + 1;
 				}
 			});
