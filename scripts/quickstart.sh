@@ -57,9 +57,10 @@ demo() {
     -p "$icp/out/log_estimated_path.txt" -o "$out" </dev/null
   echo
   echo "Demo done. The pictures of the map are in $out:"
-  echo "  $out/evidential.png  (red occupied, green free, blue unknown, white conflict)"
+  echo "  $out/evidential.png  (red occupied, green free, blue unknown)"
   echo "  $out/betp.png        (probability of occupancy: white free, black occupied)"
-  echo "  $out/conflict.png    (conflict between scans: where the map disagrees with itself)"
+  echo "  $out/conflict.png    (conflict kept in the cells: black unless conflictHandling=Keep)"
+  echo "  $out/motion.png      (the motion layer: orange appeared, blue left, over the static map)"
   echo "$out/summary.txt describes the run; doc/evgrid.md explains evgrid."
 }
 

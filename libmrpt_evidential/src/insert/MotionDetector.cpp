@@ -9,6 +9,7 @@ namespace mrpt_evidential
 namespace
 {
 bool leansOccupied(const Mass& m) { return m.occupied > m.free && m.occupied >= 0.5; }
+
 }  // namespace
 
 void CMotionDetector::afterFusionOfEventCell(
@@ -16,11 +17,17 @@ void CMotionDetector::afterFusionOfEventCell(
 	bool impact)
 {
 	const bool seenFree = observed.free > observed.occupied;
+	// Seen occupied: a beam ends in the cell, not the imprecision's spread
+	// of one that ends beside it.
 	const bool seenOccupied = impact && observed.occupied > observed.free;
 	if ((e == CellEvent::Appeared || e == CellEvent::Leaving) && seenFree)
 		m_candidates.push_back({idx, CellEvent::Disappeared});
 	else if (e == CellEvent::Disappeared && seenOccupied)
 		m_candidates.push_back({idx, CellEvent::Appeared});
+	else if (e != CellEvent::Leaving && !isRecent(grid, idx))
+		// Seen again, as it was, after its window: the event is over.
+		// Clearing it keeps the cell out of the slow path of later scans.
+		grid.setEvent(idx, CellEvent::None);
 	else if (e == CellEvent::Leaving && seenOccupied)
 		grid.setEvent(idx, CellEvent::None);
 }

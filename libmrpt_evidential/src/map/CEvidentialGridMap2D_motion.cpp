@@ -4,6 +4,7 @@
 
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -45,14 +46,21 @@ void CEvidentialGridMap2D::fuseWithMotion(const CScanImpacts& impacts)
 	const double suspect =
 		std::min(std::ceil(io.motionMinConflict / std::max(w, 1e-9) * kMassScale), kMassScale);
 	const auto occupiedBelow = static_cast<std::uint16_t>(suspect);
+	// In pieces: one loud cell sends its piece down the slow path, not the
+	// whole run.
+	constexpr std::size_t kPiece = 16;
 	const auto fuseRun = [&](auto decays, std::size_t first, std::size_t count) {
-		if (dempster && m_grid.isQuietRun(first, count, occupiedBelow))
-			for (std::size_t idx = first; idx < first + count; ++idx)
-				m_grid.fuseSimpleFree<decltype(decays)::value, false>(
-					idx, static_cast<float>(w));
-		else
-			for (std::size_t idx = first; idx < first + count; ++idx)
-				single(idx, uniform, false);
+		for (const std::size_t end = first + count; first < end; first += kPiece)
+		{
+			const std::size_t n = std::min(kPiece, end - first);
+			if (dempster && m_grid.isQuietRun(first, n, occupiedBelow))
+				for (std::size_t idx = first; idx < first + n; ++idx)
+					m_grid.fuseSimpleFree<decltype(decays)::value, false>(
+						idx, static_cast<float>(w));
+			else
+				for (std::size_t idx = first; idx < first + n; ++idx)
+					single(idx, uniform, false);
+		}
 	};
 	const auto fuseAll = [&](auto decays) {
 		transform.forEachInformedCell(

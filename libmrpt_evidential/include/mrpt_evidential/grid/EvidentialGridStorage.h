@@ -218,15 +218,16 @@ class EvidentialGridStorage
 			encodeScaledNormal(c, (f + u * w) * normalize, (o - o * w) * normalize, m_ceiling);
 		restamp(c);
 	}
-	/** True when no cell of [first, first + count) has an event or a stored
-	 * n(O) of `occupiedBelow` or more: free evidence then finds nothing
-	 * there for the motion layer (decay only lowers n(O)). */
+	/** True when no cell of [first, first + count) has an event that a free
+	 * sight judges again (Appeared, Leaving) or a stored n(O) of
+	 * `occupiedBelow` or more: free evidence then finds nothing there for
+	 * the motion layer (decay only lowers n(O)). */
 	bool isQuietRun(std::size_t first, std::size_t count, std::uint16_t occupiedBelow) const
 	{
 		unsigned loud = 0;
 		for (std::size_t i = first; i < first + count; ++i)
 			loud |= static_cast<unsigned>(m_cells[i].occupied >= occupiedBelow) |
-				static_cast<unsigned>(m_cells[i].aside != 0);
+				static_cast<unsigned>((m_cells[i].aside & kEventJudgedWhenSeenFree) != 0);
 		return loud == 0;
 	}
 	/** @} */

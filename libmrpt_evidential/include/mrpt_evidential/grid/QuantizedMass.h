@@ -70,6 +70,10 @@ constexpr std::uint16_t kHeldImpact = 0x4000;
 constexpr unsigned kEventStampBits = 14;
 constexpr std::uint16_t kEventStampMask = (1u << kEventStampBits) - 1;
 
+/** The bit of `aside` that Appeared and Leaving set (their kinds are odd):
+ * the events a free sight of the cell judges again. */
+constexpr std::uint16_t kEventJudgedWhenSeenFree = 1u << kEventStampBits;
+
 inline std::uint16_t packEvent(CellEvent e, std::uint16_t stamp) noexcept
 {
 	return static_cast<std::uint16_t>(
