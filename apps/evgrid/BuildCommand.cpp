@@ -25,6 +25,7 @@
 #include "InputOptions.h"
 #include "MapFiles.h"
 #include "MapOutputs.h"
+#include "ScanInsertion.h"
 
 using mrpt::poses::CPose3D;
 using mrpt_evidential::CEvidentialGridMap2D;
@@ -173,17 +174,9 @@ class CScanInserter
 			return;
 		}
 		bool inserted = false;
-		try
 		{
 			CScopedTimer t(m_seconds);
-			inserted = m_map.insertObservation(scan, *pose);
-		}
-		catch (const std::exception& e)
-		{
-			// Damaged data can parse into a scan the map refuses (a sensor
-			// pose that is not a number): say which one.
-			throw std::runtime_error(
-				m_input.place() + ": cannot insert the scan: " + describe(e));
+			inserted = insertScan(m_map, scan, *pose, m_input.place());
 		}
 		if (!inserted)
 		{

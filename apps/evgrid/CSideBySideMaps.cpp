@@ -4,11 +4,10 @@
 #include "CSideBySideMaps.h"
 
 #include <algorithm>
-#include <stdexcept>
 #include <utility>
 
 #include "CInputWalker.h"
-#include "CommandLine.h"
+#include "ScanInsertion.h"
 
 using mrpt::poses::CPose3D;
 using mrpt_evidential::CEvidentialGridMap2D;
@@ -47,20 +46,10 @@ void CSideBySideMaps::offer(
 		return;
 	}
 	++m_counts.offered;
-	const auto insertInto = [&](mrpt::maps::CMetricMap& map, const char* name) {
-		try
-		{
-			return map.insertObservation(scan, *pose);
-		}
-		catch (const std::exception& e)
-		{
-			throw std::runtime_error(
-				m_input.place() + ": " + name +
-				" cannot insert the scan: " + describe(e));
-		}
-	};
-	if (insertInto(*m_ours, "our map")) ++m_counts.oursInserted;
-	if (insertInto(m_mrpt, "MRPT's grid")) ++m_counts.mrptInserted;
+	if (insertScan(*m_ours, scan, *pose, m_input.place(), "our map"))
+		++m_counts.oursInserted;
+	if (insertScan(m_mrpt, scan, *pose, m_input.place(), "MRPT's grid"))
+		++m_counts.mrptInserted;
 }
 
 void CSideBySideMaps::finish()

@@ -3,11 +3,9 @@
  * line and runs the parts in order: both maps, the cell agreement, the
  * localization test, the report. */
 
-#include <iostream>
 #include <optional>
 #include <utility>
 
-#include <mrpt_evidential/support/AtomicFile.h>
 #include "CInputWalker.h"
 #include "CProgress.h"
 #include "CSideBySideMaps.h"
@@ -34,15 +32,7 @@ std::optional<int> parseOptions(
 		"localization hit rate of each map on the scans held out of both. "
 		"See doc/evgrid.md.",
 		' ', EVGRID_VERSION);
-	TCLAP::SwitchArg argQuiet(
-		"q", "quiet",
-		"Print nothing but errors (the report goes only to --output).", cmd,
-		false);
-	TCLAP::ValueArg<std::string> argOutput(
-		"", "output",
-		"Also write the report's numbers to this file as 'key value' lines, "
-		"atomically (a failed run leaves an earlier file as it was).",
-		false, "", "FILE", cmd);
+	CReportArgs reportArgs(cmd);
 	TCLAP::ValueArg<int> argHoldout(
 		"", "holdout",
 		"Hold every N-th scan with a pose out of both maps, for the "
@@ -55,22 +45,20 @@ std::optional<int> parseOptions(
 	options.source = inputArgs.values();
 	options.holdout = argHoldout.getValue();
 	requireAtLeast("--holdout", options.holdout, 2);
-	options.output = argOutput.getValue();
-	if (argOutput.isSet() && options.output.empty())
-		throw UsageError("--output needs a non-empty value");
-	options.quiet = argQuiet.getValue();
+	options.report = reportArgs.values();
 	return std::nullopt;
 }
 
 void compare(const TCompareOptions& options)
 {
-	if (!options.output.empty()) checkOutputFile(options.output);
+	if (!options.report.output.empty())
+		checkOutputFile(options.report.output);
 	auto ours = createMap(options.source);
 	CPoseSource poses = createPoseSource(options.source);
 	CInputWalker input(options.source.input, poses);
 	CSideBySideMaps maps(std::move(ours), options.holdout, input);
 
-	const auto mode = CProgress::modeFor(options.quiet);
+	const auto mode = CProgress::modeFor(options.report.quiet);
 	CProgress building(mode, std::string(kCompareName) + " (maps)");
 	input.walk(
 		{[] {},
@@ -106,12 +94,10 @@ void compare(const TCompareOptions& options)
 	run.mrpt = scoreLocalization(maps.mrpt(), maps.heldOut(), afterScan);
 	localizing.finish();
 
-	if (!options.output.empty())
-		mrpt_evidential::detail::writeFileAtomically(
-			options.output, [&](std::ostream& os) {
-				writeKeyValues(os, options, maps, run);
-			});
-	if (!options.quiet) printReport(std::cout, options, maps, run);
+	writeReport(
+		options.report,
+		[&](std::ostream& os) { writeKeyValues(os, options, maps, run); },
+		[&](std::ostream& os) { printReport(os, options, maps, run); });
 }
 }  // namespace
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "InputOptions.h"
+#include "Report.h"
 
 namespace evgrid
 {
@@ -15,9 +16,7 @@ struct TCompareOptions
 	TInputOptions source;
 	/** Every N-th scan with a pose is held out of both maps, N >= 2. */
 	int holdout = 10;
-	/** The `key value` file; empty: none. */
-	std::string output;
-	bool quiet = false;
+	TReportOptions report;
 };
 
 }  // namespace evgrid

@@ -5,8 +5,9 @@
 #include <mrpt_evidential/support/NumberText.h>
 
 #include <cstddef>
-#include <cstdio>
 #include <iomanip>
+
+#include "Report.h"
 
 using mrpt_evidential::detail::shortestText;
 using P = evgrid::TPerturbations;
@@ -15,23 +16,18 @@ namespace evgrid
 {
 namespace
 {
-/** Every number goes through these, so that the console and the file show
- * the same text. */
-std::string fixed(double value, int decimals)
-{
-	char text[64];
-	std::snprintf(text, sizeof(text), "%.*f", decimals, value);
-	return text;
-}
+/** Every number goes through fixedText() and these, so that the console and
+ * the file show the same text. */
 std::string percent(std::size_t part, std::size_t whole)
 {
 	if (whole == 0) return "n/a";
-	return fixed(100.0 * static_cast<double>(part) / static_cast<double>(whole), 2);
+	return fixedText(
+		100.0 * static_cast<double>(part) / static_cast<double>(whole), 2);
 }
 std::string mean(double sum, std::size_t n, int decimals)
 {
 	if (n == 0) return "n/a";
-	return fixed(sum / static_cast<double>(n), decimals);
+	return fixedText(sum / static_cast<double>(n), decimals);
 }
 std::string meanDistance(const TLocalizationScore& s)
 {
@@ -46,9 +42,9 @@ std::string meanAngle(const TLocalizationScore& s)
 template <class MAP>
 std::string extent(const MAP& map)
 {
-	return "x " + fixed(map.getXMin(), 2) + " to " + fixed(map.getXMax(), 2) +
-		" m, y " + fixed(map.getYMin(), 2) + " to " + fixed(map.getYMax(), 2) +
-		" m";
+	return "x " + fixedText(map.getXMin(), 2) + " to " +
+		fixedText(map.getXMax(), 2) + " m, y " + fixedText(map.getYMin(), 2) +
+		" to " + fixedText(map.getYMax(), 2) + " m";
 }
 
 struct TDecisionRow
@@ -86,12 +82,12 @@ void printLocalization(std::ostream& os, const TCompareRecord& run, int holdout)
 	const double phi = P::kStepsPhi * P::kStepPhiDeg;
 	os << "localization: every " << holdout
 	   << "-th scan with a pose is held out of both maps and scored\n"
-	   << "  at its pose p and at p + (dx, dy, dphi): dx, dy " << fixed(-xy, 2)
-	   << " to " << fixed(xy, 2) << " m step " << fixed(P::kStepXY, 2)
+	   << "  at its pose p and at p + (dx, dy, dphi): dx, dy " << fixedText(-xy, 2)
+	   << " to " << fixedText(xy, 2) << " m step " << fixedText(P::kStepXY, 2)
 	   << ",\n  dphi " << shortestText(-phi) << " to " << shortestText(phi)
 	   << " deg step " << shortestText(P::kStepPhiDeg) << ". A hit: the best "
 		  "(first maximum;\n  dx outermost, dphi innermost) lies within "
-	   << fixed(P::kHitDistance, 2) << " m and "
+	   << fixedText(P::kHitDistance, 2) << " m and "
 	   << shortestText(P::kHitAngleDeg) << " deg of p.\n";
 	if (run.ours.scans == 0)
 	{

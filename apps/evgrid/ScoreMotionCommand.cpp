@@ -4,11 +4,8 @@
  * the truth's records and runs the parts in order. */
 
 #include <mrpt/core/Clock.h>
-#include <mrpt_evidential/support/AtomicFile.h>
 
 #include <cmath>
-#include <cstdio>
-#include <iostream>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -23,6 +20,7 @@
 #include "Commands.h"
 #include "InputOptions.h"
 #include "MapOutputs.h"
+#include "ScanInsertion.h"
 #include "ScoreMotionOptions.h"
 #include "ScoreMotionReport.h"
 
@@ -47,15 +45,7 @@ std::optional<int> parseOptions(
 		"recall and F1 of each kind summed over the scans, and the share of "
 		"walls and furniture the map flags as moving. See doc/evgrid.md.",
 		' ', EVGRID_VERSION);
-	TCLAP::SwitchArg argQuiet(
-		"q", "quiet",
-		"Print nothing but errors (the report goes only to --output).", cmd,
-		false);
-	TCLAP::ValueArg<std::string> argOutput(
-		"", "output",
-		"Also write the report's numbers to this file as 'key value' lines, "
-		"atomically (a failed run leaves an earlier file as it was).",
-		false, "", "FILE", cmd);
+	CReportArgs reportArgs(cmd);
 	TCLAP::ValueArg<int> argTolerance(
 		"", "tolerance",
 		"A predicted cell and a truth cell of the same kind match within "
@@ -90,10 +80,7 @@ std::optional<int> parseOptions(
 			"--truth-times must be observed or physical, got '" + times + "'");
 	options.tolerance = argTolerance.getValue();
 	requireAtLeast("--tolerance", options.tolerance, 0);
-	options.output = argOutput.getValue();
-	if (argOutput.isSet() && options.output.empty())
-		throw UsageError("--output needs a non-empty value");
-	options.quiet = argQuiet.getValue();
+	options.report = reportArgs.values();
 	return std::nullopt;
 }
 
@@ -137,16 +124,16 @@ class CReplay
 		if (!(std::abs(stamp - expected) <= kTimeTolerance))
 			throw std::runtime_error(
 				m_truth.path() + ": scan " + std::to_string(k) + " is at " +
-				fixedTime(expected) + " s but " + m_input.place() +
+				fixedText(expected, 3) + " s but " + m_input.place() +
 				" (2-D scan " + std::to_string(k) + ") at " +
-				fixedTime(stamp) + " s: not the truth of this input");
+				fixedText(stamp, 3) + " s: not the truth of this input");
 		m_events->apply(k, records[k]);
 		if (!pose)
 		{
 			++m_counts.withoutPose;
 			return;
 		}
-		if (!insert(scan, *pose))
+		if (!insertScan(m_map, scan, *pose, m_input.place()))
 		{
 			++m_counts.refused;
 			return;
@@ -179,28 +166,6 @@ class CReplay
 	const TMotionScore& score() const { return m_scorer.totals(); }
 
    private:
-	static std::string fixedTime(double t)
-	{
-		char text[32];
-		std::snprintf(text, sizeof(text), "%.3f", t);
-		return text;
-	}
-
-	bool insert(
-		const mrpt::obs::CObservation2DRangeScan& scan,
-		const mrpt::poses::CPose3D& pose)
-	{
-		try
-		{
-			return m_map.insertObservation(scan, pose);
-		}
-		catch (const std::exception& e)
-		{
-			throw std::runtime_error(
-				m_input.place() + ": cannot insert the scan: " + describe(e));
-		}
-	}
-
 	CEvidentialGridMap2D& m_map;
 	const CMotionTruth& m_truth;
 	const std::string& m_inputPath;
@@ -214,14 +179,15 @@ class CReplay
 void scoreMotion(const TScoreMotionOptions& options)
 {
 	// The small files first, so that their errors come before the long walk.
-	if (!options.output.empty()) checkOutputFile(options.output);
+	if (!options.report.output.empty())
+		checkOutputFile(options.report.output);
 	const std::unique_ptr<CEvidentialGridMap2D> map = createMap(options.source);
 	CPoseSource poses = createPoseSource(options.source);
 	const CMotionTruth truth = CMotionTruth::load(options.truth);
 
 	CInputWalker input(options.source.input, poses);
 	CReplay replay(*map, truth, options, input);
-	CProgress progress(CProgress::modeFor(options.quiet), kScoreMotionName);
+	CProgress progress(CProgress::modeFor(options.report.quiet), kScoreMotionName);
 	input.walk(
 		{[] {},
 		 [&replay](const auto& scan, const auto& pose) {
@@ -238,12 +204,12 @@ void scoreMotion(const TScoreMotionOptions& options)
 	run.motionWindow = map->insertionOptions.motionWindow;
 	run.scans = replay.counts();
 	run.score = replay.score();
-	if (!options.output.empty())
-		mrpt_evidential::detail::writeFileAtomically(
-			options.output, [&](std::ostream& os) {
-				writeMotionKeyValues(os, options, truth, run);
-			});
-	if (!options.quiet) printMotionReport(std::cout, options, truth, run);
+	writeReport(
+		options.report,
+		[&](std::ostream& os) {
+			writeMotionKeyValues(os, options, truth, run);
+		},
+		[&](std::ostream& os) { printMotionReport(os, options, truth, run); });
 }
 }  // namespace
 

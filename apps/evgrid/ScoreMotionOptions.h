@@ -6,6 +6,7 @@
 
 #include "CTruthEvents.h"
 #include "InputOptions.h"
+#include "Report.h"
 
 namespace evgrid
 {
@@ -27,9 +28,7 @@ struct TScoreMotionOptions
 	/** Cells (Chebyshev) within which a prediction and a truth cell match,
 	 * >= 0. */
 	int tolerance = 1;
-	/** The `key value` file; empty: none. */
-	std::string output;
-	bool quiet = false;
+	TReportOptions report;
 };
 
 }  // namespace evgrid

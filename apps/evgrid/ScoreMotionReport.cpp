@@ -5,9 +5,10 @@
 
 #include <mrpt_evidential/support/NumberText.h>
 
-#include <cstdio>
 #include <iomanip>
 #include <optional>
+
+#include "Report.h"
 
 using mrpt_evidential::detail::shortestText;
 
@@ -15,17 +16,11 @@ namespace evgrid
 {
 namespace
 {
-/** Every number goes through these, so that the console and the file show
- * the same text. */
-std::string fixed(double value, int decimals)
-{
-	char text[64];
-	std::snprintf(text, sizeof(text), "%.*f", decimals, value);
-	return text;
-}
+/** Every number goes through fixedText() and these, so that the console and
+ * the file show the same text. */
 std::string text(const std::optional<double>& ratio)
 {
-	return ratio ? fixed(*ratio, 4) : "n/a";
+	return ratio ? fixedText(*ratio, 4) : "n/a";
 }
 
 std::optional<double> ratio(std::size_t part, std::size_t whole)
@@ -57,7 +52,7 @@ std::string truthTimesText(TruthTimes times)
 			 : " (each event from the first scan that saw it)");
 }
 
-std::string percent(double share) { return fixed(100 * share, 2); }
+std::string percent(double share) { return fixedText(100 * share, 2); }
 std::string overallStaticPct(const TStaticScore& s)
 {
 	const auto r = ratio(s.flagged, s.observed);
@@ -71,7 +66,7 @@ std::string meanStaticPct(const TStaticScore& s)
 
 std::string truthGrid(const TTruthGrid& g)
 {
-	return fixed(g.x0, 2) + " " + fixed(g.y0, 2) + " " +
+	return fixedText(g.x0, 2) + " " + fixedText(g.y0, 2) + " " +
 		shortestText(g.resolution) + " " + std::to_string(g.sizeX) + " " +
 		std::to_string(g.sizeY);
 }
@@ -114,7 +109,7 @@ void printMotionReport(
 	   << "truth: " << truth.path() << " (scene " << truth.scene() << ", "
 	   << truth.scans().size() << " scans, grid " << g.sizeX << " x "
 	   << g.sizeY << " cells of " << shortestText(g.resolution)
-	   << " m from (" << fixed(g.x0, 2) << ", " << fixed(g.y0, 2) << "))\n"
+	   << " m from (" << fixedText(g.x0, 2) << ", " << fixedText(g.y0, 2) << "))\n"
 	   << "scans: " << n.total << " 2-D scans: " << n.withoutPose
 	   << " without a pose, " << n.refused << " refused by the map, "
 	   << n.scored << " inserted and scored\n"
@@ -145,7 +140,7 @@ void printMotionReport(
 		os << "  worst scan: n/a (no scan saw a static cell)\n";
 	else
 		os << "  worst scan %: " << percent(st.worstShare) << " at scan "
-		   << st.worstScan << " (" << fixed(st.worstTime, 2) << " s)\n";
+		   << st.worstScan << " (" << fixedText(st.worstTime, 2) << " s)\n";
 }
 
 void writeMotionKeyValues(
@@ -196,7 +191,7 @@ void writeMotionKeyValues(
 	   << "static_worst_scan "
 	   << (st.scans ? std::to_string(st.worstScan) : "n/a") << "\n"
 	   << "static_worst_time_s "
-	   << (st.scans ? fixed(st.worstTime, 2) : "n/a") << "\n";
+	   << (st.scans ? fixedText(st.worstTime, 2) : "n/a") << "\n";
 }
 
 }  // namespace evgrid

@@ -1,0 +1,24 @@
+/* evgrid: inserting one scan into a map, as build, compare and score-motion
+ * do: one home for the error that says which scan the map could not take. */
+#pragma once
+
+#include <mrpt/maps/CMetricMap.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose3D.h>
+
+#include <string>
+
+namespace evgrid
+{
+/** map.insertObservation(scan, pose). Damaged data can parse into a scan the
+ * map refuses (a sensor pose that is not a number): the error names it.
+ * \param place CInputWalker::place(), where the scan is in the input.
+ * \param mapName which map, where there is more than one; else null.
+ * \return what insertObservation() returns (false: the map declined it).
+ * \throws std::runtime_error "PLACE: [MAP ]cannot insert the scan: WHY". */
+bool insertScan(
+	mrpt::maps::CMetricMap& map, const mrpt::obs::CObservation2DRangeScan& scan,
+	const mrpt::poses::CPose3D& pose, const std::string& place,
+	const char* mapName = nullptr);
+
+}  // namespace evgrid
