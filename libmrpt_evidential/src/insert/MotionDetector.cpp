@@ -60,8 +60,15 @@ void CMotionDetector::settle(EvidentialGridStorage& grid) const
 		const CellEvent before = grid.event(c.index);
 		if (c.event == CellEvent::Appeared)
 		{
+			const bool pending = before == CellEvent::Leaving &&
+				!leansOccupied(grid.read(c.index)) &&
+				grid.eventTime(c.index) < grid.latestTime();
 			if (!nearStaticStructure(grid, c.index))
 				grid.setEvent(c.index, CellEvent::Appeared);
+			else if (pending)
+				grid.setEventKeepingTime(c.index, CellEvent::Appeared);
+			else if (before != CellEvent::Leaving)
+				grid.setEvent(c.index, CellEvent::Leaving);
 			continue;
 		}
 		if (!nearStaticStructure(grid, c.index))

@@ -29,9 +29,11 @@ struct TMotionRules
  * sees the whole scan, and every cell is fused once).
  *
  * - Something appeared: a cell seen free now holds a beam's end (conflict
- *   before(F) observed(O) of at least minConflict), away from static
- *   structure (a cell that held beams' ends, leans occupied and is not
- *   itself a recent arrival or leaving).
+ *   before(F) observed(O) of at least minConflict). Beside static structure
+ *   (a cell that held beams' ends, leans occupied and is not itself a recent
+ *   arrival or leaving) that is likely the pose's error: the cell is only
+ *   pending (CellEvent::Leaving while it leans free) until a later scan hits
+ *   it again.
  * - Something left: a cell that leaned occupied and held beams' ends is
  *   seen free, away from static structure. Beside structure, a ray may graze
  *   a wall: while its evidence still leans occupied the cell is only Leaving

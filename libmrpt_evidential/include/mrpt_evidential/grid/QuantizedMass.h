@@ -52,9 +52,10 @@ constexpr double kQuantizationError = 0.5 / kMassScale;
 constexpr std::uint16_t kMaxStoredConflict = 65534;
 
 /** What a cell of a grid without conflict remembers of its latest motion
- * event. `Leaving` is a cell seen free while its evidence still says
- * occupied: a disappearance not yet confirmed (the motion layer reads it as
- * none), whose stamp is that of the first contradicting scan. */
+ * event. `Leaving` is a change seen once and not yet confirmed (the motion
+ * layer reads it as none), whose stamp is that of the scan that first saw
+ * it: a cell seen free while its evidence still says occupied, or, while it
+ * leans free, a cell seen occupied beside static structure. */
 enum class CellEvent : std::uint8_t
 {
 	None = 0,
