@@ -77,8 +77,10 @@ print_peaks() {
   [ -e "${peaks[0]}" ] || return 0
   echo
   echo "Largest peak resident memory of a test, MB ($3):"
-  cat "${peaks[@]}" | sort -rn | head -"$2" |
-    awk '{ kb = $1; $1 = ""; printf "  %8.1f %s\n", kb / 1024, $0 }'
+  # awk reads to the end: `head` would leave sort writing into a closed pipe,
+  # and SIGPIPE fails the script under pipefail once the list is long.
+  cat "${peaks[@]}" | sort -rn |
+    awk -v n="$2" 'NR <= n { kb = $1; $1 = ""; printf "  %8.1f %s\n", kb / 1024, $0 }'
 }
 
 case "${1:-}" in
