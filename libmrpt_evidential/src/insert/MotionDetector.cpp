@@ -44,7 +44,9 @@ bool CMotionDetector::nearStaticStructure(
 		{
 			const std::size_t n = g.index(x, y);
 			// The imprecise model's spread around impacts is not structure.
-			if (n == idx || !grid.heldImpact(n) || !leansOccupied(grid.read(n))) continue;
+			if (n == idx || !grid.heldImpact(n) || !grid.mayLeanOccupied(n) ||
+				!leansOccupied(grid.read(n)))
+				continue;
 			const CellEvent e = grid.event(n);
 			const bool moving = e == CellEvent::Leaving ||
 				(e == CellEvent::Appeared && isRecent(grid, n));

@@ -128,6 +128,14 @@ class CPolarToCartesian
 	 * informs nothing). */
 	const Box& box() const { return m_box; }
 
+	/** World unit vector (x, y) of sector s's centre line, s < the polar
+	 * grid's sectorCount(); valid after setup() of a grid that informs
+	 * something. */
+	std::pair<double, double> sectorDirection(std::size_t s) const
+	{
+		return {m_directions[2 * s + 2], m_directions[2 * s + 3]};
+	}
+
 	/** The free mass every cell of the uniform region receives. */
 	const Mass& uniformMass() const { return m_uniformMass; }
 

@@ -8,18 +8,17 @@
 namespace mrpt_evidential
 {
 void CScanImpacts::build(
-	const CPolarSourceGrid& polar, const PlanarSensorPose& sensor,
-	const GridGeometry& grid)
+	const CPolarSourceGrid& polar, const CPolarToCartesian& transform,
+	const PlanarSensorPose& sensor, const GridGeometry& grid)
 {
 	m_cells.clear();
-	const double dir = sensor.mirrored ? -1.0 : 1.0;
+	if (transform.box().empty()) return;
 	const double reach = static_cast<double>(polar.binCount()) * polar.binSize();
 	for (std::size_t s = 0; s < polar.sectorCount(); ++s)
 	{
 		const std::vector<double>& ranges = polar.impacts(s);
 		if (ranges.empty() || !(ranges.front() < reach)) continue;
-		const double a = sensor.yaw + dir * polar.sectorAngle(s);
-		const double c = std::cos(a), sn = std::sin(a);
+		const auto [c, sn] = transform.sectorDirection(s);
 		for (const double r : ranges)
 		{
 			if (!(r < reach)) break;  // sorted: the rest lie beyond too

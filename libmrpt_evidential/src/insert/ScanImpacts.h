@@ -32,11 +32,12 @@ class CScanImpacts
 		double occupied;
 	};
 
-	/** Lists the impact cells of `polar` placed at `sensor` in `grid`,
-	 * sorted by index. Impacts outside the grid are left out. */
+	/** Lists the impact cells of `polar` as `transform` (set up for it)
+	 * places it in `grid`, sorted by index. Impacts outside the grid are left
+	 * out. */
 	void build(
-		const CPolarSourceGrid& polar, const PlanarSensorPose& sensor,
-		const GridGeometry& grid);
+		const CPolarSourceGrid& polar, const CPolarToCartesian& transform,
+		const PlanarSensorPose& sensor, const GridGeometry& grid);
 
 	const std::vector<TImpactCell>& cells() const { return m_cells; }
 

@@ -82,7 +82,7 @@ bool CEvidentialGridMap2D::insertScan(
 	}
 
 	CScanImpacts& impacts = m_workspace->impacts;
-	impacts.build(polar, *sensor, geometry());
+	impacts.build(polar, transform, *sensor, geometry());
 	if (m_grid.keepsConflict())
 		fuseKeepingConflict(impacts);
 	else

@@ -238,6 +238,14 @@ class EvidentialGridStorage
 	 * but the scans being scored end where beams ended. */
 	void markImpact(std::size_t idx) { m_cells[idx].stamp |= kHeldImpact; }
 	bool heldImpact(std::size_t idx) const { return (m_cells[idx].stamp & kHeldImpact) != 0; }
+	/** False when cell idx cannot have m(O) > m(F) and m(O) >= 0.5, decayed
+	 * or not (decay only scales both down): a test on the stored values that
+	 * spares the decoding. */
+	bool mayLeanOccupied(std::size_t idx) const
+	{
+		const QuantizedCell& c = m_cells[idx];
+		return c.occupied > c.free && c.occupied >= kMassScale / 2;
+	}
 
 	/** @name Motion events (grids without conflict; CellEvent::None
 	 * otherwise)
