@@ -55,7 +55,7 @@ bool CMotionDetector::nearStaticStructure(
 	return false;
 }
 
-void CMotionDetector::settle(EvidentialGridStorage& grid) const
+void CMotionDetector::settle(EvidentialGridStorage& grid)
 {
 	for (const TCandidate& c : m_candidates)
 	{
@@ -66,9 +66,10 @@ void CMotionDetector::settle(EvidentialGridStorage& grid) const
 				!leansOccupied(grid.read(c.index)) &&
 				grid.eventTime(c.index) < grid.latestTime();
 			if (!nearStaticStructure(grid, c.index))
-				grid.setEvent(c.index, CellEvent::Appeared);
+				grid.setEvent(c.index, CellEvent::Appeared), m_arrivals.push_back(c.index);
 			else if (pending)
-				grid.setEventKeepingTime(c.index, CellEvent::Appeared);
+				grid.setEventKeepingTime(c.index, CellEvent::Appeared),
+					m_arrivals.push_back(c.index);
 			else if (before != CellEvent::Leaving)
 				grid.setEvent(c.index, CellEvent::Leaving);
 			continue;

@@ -65,8 +65,30 @@ class CMotionDetector
 			afterFusionOfEventCell(grid, idx, e, observed, impact);
 	}
 
+	/** Before the scan's cells are fused: the recent arrivals that its beams
+	 * crossed within the free margin (whose cells get no free evidence) are
+	 * candidate departures all the same: an arrival is no wall to protect. */
+	template <typename CrossedInMargin>
+	void judgeArrivalsInMargins(const EvidentialGridStorage& grid, CrossedInMargin&& crossed)
+	{
+		// A grid that grew or was reset has its cells elsewhere: the list
+		// starts again (its arrivals then last their window at most).
+		const GridGeometry& g = grid.geometry();
+		if (!(g.xMin == m_listedGeometry.xMin && g.yMin == m_listedGeometry.yMin &&
+			  g.sizeX == m_listedGeometry.sizeX && g.sizeY == m_listedGeometry.sizeY))
+			m_arrivals.clear();
+		m_listedGeometry = g;
+		std::size_t kept = 0;
+		for (const std::size_t idx : m_arrivals)
+		{
+			if (grid.event(idx) != CellEvent::Appeared || !isRecent(grid, idx)) continue;
+			m_arrivals[kept++] = idx;
+			if (crossed(idx)) m_candidates.push_back({idx, CellEvent::Disappeared});
+		}
+		m_arrivals.resize(kept);
+	}
 	/** Settles the candidates of the scan. */
-	void settle(EvidentialGridStorage& grid) const;
+	void settle(EvidentialGridStorage& grid);
 
    private:
 	/** A cell with an event that the scan saw without much conflict: an
@@ -91,6 +113,10 @@ class CMotionDetector
 	};
 	TMotionRules m_rules;
 	std::vector<TCandidate> m_candidates;
+	/** Cells set Appeared, to find them in the free margins of later scans,
+	 * in the grid of `m_listedGeometry`. */
+	std::vector<std::size_t> m_arrivals;
+	GridGeometry m_listedGeometry;
 };
 
 }  // namespace mrpt_evidential

@@ -220,6 +220,31 @@ void CPolarToCartesian::setup(
 		});
 }
 
+bool CPolarToCartesian::inFreeMargin(double x, double y) const
+{
+	if (!m_polar || m_box.empty()) return false;
+	double angle, range2;
+	polarOfCells(x - m_sensor.x, y - m_sensor.y, 0.0, 1, &angle, &range2);
+	if (angle >= m_span) return false;
+	// Both sectors around the point, as the bilinear mix takes them: a beam
+	// that passes beside a thing standing in part of the cell is not a
+	// crossing of the cell.
+	const auto ns = detail::neighbours(
+		angle * m_invSpacing - 0.5, m_polar->sectorCount(), m_polar->fullTurn());
+	const double range = std::sqrt(range2);
+	bool withheld = false;
+	for (const std::size_t s : {ns.lo, ns.hi})
+	{
+		const std::vector<double>& impacts = m_polar->impacts(s);
+		// A cell and a half short of the impact: the cell that holds it, or
+		// one it straddles, is seen occupied, not crossed.
+		if (impacts.empty() || !(range < impacts.front() - 1.5 * m_polar->binSize()))
+			return false;
+		withheld = withheld || range >= m_sectorSpans[s].freeLimit;
+	}
+	return withheld;
+}
+
 void CPolarToCartesian::RowSpans::fill(
 	const std::vector<double>& polygon, const GridGeometry& grid, int first,
 	int last)

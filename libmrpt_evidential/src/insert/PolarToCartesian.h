@@ -136,6 +136,11 @@ class CPolarToCartesian
 		return {m_directions[2 * s + 2], m_directions[2 * s + 3]};
 	}
 
+	/** True when world point (x, y) lies in a sector's span between its free
+	 * limit and a bin and a half short of its nearest impact: a beam crossed
+	 * it, but the free margin kept its free evidence from the cells. */
+	bool inFreeMargin(double x, double y) const;
+
 	/** The free mass every cell of the uniform region receives. */
 	const Mass& uniformMass() const { return m_uniformMass; }
 

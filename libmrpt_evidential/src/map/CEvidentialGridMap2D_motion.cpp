@@ -84,6 +84,12 @@ void CEvidentialGridMap2D::fuseWithMotion(const CScanImpacts& impacts)
 				}
 			});
 	};
+	const GridGeometry& g = geometry();
+	motion.judgeArrivalsInMargins(m_grid, [&](std::size_t idx) {
+		const auto cx = static_cast<int>(idx % static_cast<std::size_t>(g.sizeX));
+		const auto cy = static_cast<int>(idx / static_cast<std::size_t>(g.sizeX));
+		return transform.inFreeMargin(g.cellCenterX(cx), g.cellCenterY(cy));
+	});
 	if (m_grid.decayRate() > 0.0)
 		fuseAll(std::true_type());
 	else
