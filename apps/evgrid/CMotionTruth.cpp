@@ -2,6 +2,7 @@
  * writes it (PREFIX.motion.gz, format in rawlogs/README.md). */
 
 #include "CMotionTruth.h"
+#include "GzipFile.h"
 
 #include <zlib.h>
 
@@ -27,15 +28,7 @@ constexpr long kMaxCells = 100'000'000;
 /** The whole decompressed text (zlib reads a plain file as it is). */
 std::string readAll(const std::string& path)
 {
-	std::error_code ec;
-	if (std::filesystem::is_directory(path, ec))
-		throw std::runtime_error(path + ": is a directory, not a file");
-	errno = 0;
-	gzFile f = gzopen(path.c_str(), "rb");
-	if (!f)
-		throw std::runtime_error(
-			path + ": cannot open: " +
-			(errno != 0 ? std::strerror(errno) : "out of memory"));
+	gzFile f = openGzipForReading(path);
 	std::string text;
 	char buffer[1 << 16];
 	int n = 0;

@@ -21,6 +21,7 @@
 #include <stdexcept>
 
 #include "CommandLine.h"
+#include "GzipFile.h"
 
 namespace evgrid
 {
@@ -101,15 +102,8 @@ CObjectFileReader::CObjectFileReader(const std::string& path)
 CObjectFileReader::CObjectFileReader(const std::string& path, Check)
 	: m_path(path)
 {
+	gzFile f = openGzipForReading(path);
 	std::error_code ec;
-	if (std::filesystem::is_directory(path, ec))
-		throw std::runtime_error(path + ": is a directory, not a file");
-	errno = 0;
-	gzFile f = gzopen(path.c_str(), "rb");
-	if (!f)
-		throw std::runtime_error(
-			path + ": cannot open: " +
-			(errno != 0 ? std::strerror(errno) : "out of memory"));
 	m_archive = std::make_unique<CZlibArchive>(f);
 	m_fileSize = std::filesystem::file_size(path, ec);
 	if (ec) m_fileSize = 0;

@@ -5,6 +5,7 @@
 #include <mrpt_evidential/grid/GridGeometry.h>
 #include <mrpt_evidential/scan/CPolarSourceGrid.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -61,6 +62,24 @@ class CScanImpacts
 		{
 			while (m_it != m_end && m_it->index < idx) ++m_it;
 			return m_it != m_end ? m_it->index : static_cast<std::size_t>(-1);
+		}
+
+		/** Cuts the run of cells [first, first + count) around the impact
+		 * cells it holds (near the sensor a beam may end inside the region its
+		 * neighbours prove free): run(from, n) for each piece without one,
+		 * impact(idx, occupied) for each impact cell, in order. */
+		template <typename Run, typename Impact>
+		void splitRun(std::size_t first, std::size_t count, Run&& run, Impact&& impact)
+		{
+			const std::size_t end = first + count;
+			while (first < end)
+			{
+				const std::size_t hit = std::min(nextFrom(first), end);
+				if (hit > first) run(first, hit - first);
+				if (hit == end) break;
+				impact(hit, occupiedAt(hit));
+				first = hit + 1;
+			}
 		}
 
 	   private:

@@ -97,20 +97,13 @@ void CEvidentialGridMap2D::fuseKeepingConflict(const CScanImpacts& impacts)
 	const ConflictHandling handling = insertionOptions.conflictHandling;
 	const Mass& uniform = transform.uniformMass();
 	auto hits = impacts.cursor();
-	// The uniform runs, cut around the impact cells they hold (near the
-	// sensor a beam may end inside the region its neighbours prove free).
+	// The uniform runs, cut around the impact cells they hold.
 	const auto forEachRun = [&](std::size_t first, std::size_t count, auto&& run,
 								auto&& single) {
-		const std::size_t end = first + count;
-		while (first < end)
-		{
-			const std::size_t hit = std::min(hits.nextFrom(first), end);
-			if (hit > first) run(first, hit - first);
-			if (hit == end) break;
-			m_grid.markImpact(hit);
-			single(hit, withImpact(uniform, hits.occupiedAt(hit)));
-			first = hit + 1;
-		}
+		hits.splitRun(first, count, run, [&](std::size_t idx, double occupied) {
+			m_grid.markImpact(idx);
+			single(idx, withImpact(uniform, occupied));
+		});
 	};
 	const auto mixed = [&](std::size_t idx, const Mass& observed) {
 		const double hit = hits.occupiedAt(idx);

@@ -71,17 +71,13 @@ void CEvidentialGridMap2D::fuseWithMotion(const CScanImpacts& impacts)
 				single(idx, hit > 0.0 ? withImpact(observed, hit) : observed, hit > 0.0);
 			},
 			[&](std::size_t first, std::size_t count) {
-				// Cut around the impact cells the run holds.
-				const std::size_t end = first + count;
-				while (first < end)
-				{
-					const std::size_t hit = std::min(hits.nextFrom(first), end);
-					if (hit > first) fuseRun(decays, first, hit - first);
-					if (hit == end) break;
-					m_grid.markImpact(hit);
-					single(hit, withImpact(uniform, hits.occupiedAt(hit)), true);
-					first = hit + 1;
-				}
+				hits.splitRun(
+					first, count,
+					[&](std::size_t from, std::size_t n) { fuseRun(decays, from, n); },
+					[&](std::size_t idx, double occupied) {
+						m_grid.markImpact(idx);
+						single(idx, withImpact(uniform, occupied), true);
+					});
 			});
 	};
 	const GridGeometry& g = geometry();
