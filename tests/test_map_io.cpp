@@ -401,6 +401,20 @@ TEST(MapIO, VersionZeroFilesStillLoad)
 	EXPECT_ANY_THROW(deserialize(bytes, refused));
 }
 
+TEST(MapIO, OptionsThatTheGridCannotInsertWithAreRejected)
+{
+	// maxRange 2e5 m is valid for cells of 1 m, but at 1 cm it would take
+	// 2e7 range bins: a map read back with it could not insert a scan.
+	CEvidentialGridMap2D map(-1.0, 1.0, -1.0, 1.0, 0.01);
+	map.insertionOptions.maxRange = 2e5;
+	ASSERT_NO_THROW(map.insertionOptions.validate());
+	CEvidentialGridMap2D back;
+	EXPECT_ANY_THROW(deserialize(serialize(map), back));
+	EXPECT_TRUE(back.isEmpty());
+	map.insertionOptions.maxRange = 20.0;
+	EXPECT_NO_THROW(deserialize(serialize(map), back));
+}
+
 TEST(MapIO, UnknownVersionIsRejected)
 {
 	auto bytes = serialize(makeMap(0.3));

@@ -318,6 +318,9 @@ void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 	{
 		io.validate();
 		lo.validate();
+		// The polar grid's rules at the grid's own cells (validate() checks
+		// them for cells of 1 m): a map read back must be able to insert.
+		io.sourceGridOptions(g.resolution).validate();
 	}
 	catch (const std::invalid_argument& e)
 	{
