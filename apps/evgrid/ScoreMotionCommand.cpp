@@ -14,6 +14,7 @@
 #include "CMotionScorer.h"
 #include "CMotionTruth.h"
 #include "CObservedCells.h"
+#include "CPoseFile.h"
 #include "CProgress.h"
 #include "CTruthEvents.h"
 #include "CommandLine.h"
@@ -64,6 +65,14 @@ std::optional<int> parseOptions(
 		"was seen free again); 'physical', when the simulator says it "
 		"happened, seen or not.",
 		false, "observed", "observed|physical", cmd);
+	TCLAP::ValueArg<std::string> argTruthPoses(
+		"", "truth-poses",
+		"The robot's true poses, PREFIX.gt.txt as evgrid-simulate writes it "
+		"(lines 'time x y phi'): the cells each scan observed are traced "
+		"from there, where its beams really went, while the map is built at "
+		"the poses of -p. Without it they are traced at the map's poses, and "
+		"the map's pose error also displaces the truth.",
+		false, "", "FILE", cmd);
 	CInputArgs inputArgs(cmd);
 
 	if (const auto exitCode = parse(cmd, kScoreMotionName, argc, argv, first))
@@ -78,6 +87,7 @@ std::optional<int> parseOptions(
 	else
 		throw UsageError(
 			"--truth-times must be observed or physical, got '" + times + "'");
+	options.truthPoses = argTruthPoses.getValue();
 	options.tolerance = argTolerance.getValue();
 	requireAtLeast("--tolerance", options.tolerance, 0);
 	options.report = reportArgs.values();
@@ -99,6 +109,10 @@ class CReplay
 		  m_events(CTruthEvents::create(
 			  options.truthTimes, truth.grid(),
 			  map.insertionOptions.motionWindow)),
+		  m_truePoses(
+			  options.truthPoses.empty()
+				  ? std::nullopt
+				  : std::optional(CPoseFile::load(options.truthPoses, CPoseFile::Kind::Time))),
 		  m_seen(truth.grid()),
 		  m_scorer(truth, options.tolerance)
 	{
@@ -139,7 +153,7 @@ class CReplay
 			return;
 		}
 		++m_counts.scored;
-		m_seen.trace(scan, *pose, m_map.insertionOptions.maxRange);
+		m_seen.trace(scan, tracedPose(k, stamp, *pose), m_map.insertionOptions.maxRange);
 		m_events->observe(m_seen);
 		m_scorer.score(m_map, m_seen, *m_events, k, records[k].time);
 	}
@@ -163,14 +177,35 @@ class CReplay
 	}
 
 	const TReplayCounts& counts() const { return m_counts; }
+	/** What the report says the scans were traced at. */
+	std::string tracedAt() const
+	{
+		return m_truePoses ? "true poses, " + m_truePoses->path() : "the map's poses";
+	}
 	const TMotionScore& score() const { return m_scorer.totals(); }
 
    private:
+	/** \throws std::runtime_error if the true poses have none at the scan's
+	 *  time. */
+	mrpt::poses::CPose3D tracedPose(
+		std::size_t k, double stamp, const mrpt::poses::CPose3D& mapPose) const
+	{
+		if (!m_truePoses) return mapPose;
+		const auto truePose = m_truePoses->atTime(stamp, kTimeTolerance);
+		if (!truePose)
+			throw std::runtime_error(
+				m_truePoses->path() + ": no pose at the time of 2-D scan " +
+				std::to_string(k) + " (" + fixedText(stamp, 3) +
+				" s): not the true poses of this input");
+		return mrpt::poses::CPose3D(mrpt::poses::CPose2D(*truePose));
+	}
+
 	CEvidentialGridMap2D& m_map;
 	const CMotionTruth& m_truth;
 	const std::string& m_inputPath;
 	const CInputWalker& m_input;
 	std::unique_ptr<CTruthEvents> m_events;
+	std::optional<CPoseFile> m_truePoses;
 	CObservedCells m_seen;
 	CMotionScorer m_scorer;
 	TReplayCounts m_counts;
@@ -201,6 +236,7 @@ void scoreMotion(const TScoreMotionOptions& options)
 
 	TScoreMotionRecord run;
 	run.poses = poses.description();
+	run.tracedAt = replay.tracedAt();
 	run.motionWindow = map->insertionOptions.motionWindow;
 	run.scans = replay.counts();
 	run.score = replay.score();

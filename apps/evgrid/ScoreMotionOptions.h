@@ -25,6 +25,9 @@ struct TScoreMotionOptions
 	/** The motion truth, PREFIX.motion.gz. */
 	std::string truth;
 	TruthTimes truthTimes = TruthTimes::Observed;
+	/** The scene's true poses (PREFIX.gt.txt, by time stamp) that the scans'
+	 * cells are traced at; empty: at the map's own poses. */
+	std::string truthPoses;
 	/** Cells (Chebyshev) within which a prediction and a truth cell match,
 	 * >= 0. */
 	int tolerance = 1;

@@ -117,6 +117,7 @@ void printMotionReport(
 	   << " s (the map's motionWindow); tolerance: " << options.tolerance
 	   << (options.tolerance == 1 ? " cell" : " cells") << " (Chebyshev)\n"
 	   << "truth times: " << truthTimesText(options.truthTimes) << "\n"
+	   << "observed cells traced at: " << run.tracedAt << "\n"
 	   << "observed cells, summed over the scans: " << s.hitCells
 	   << " hit (a beam's end), " << s.crossedCells << " crossed\n\n";
 
@@ -160,6 +161,7 @@ void writeMotionKeyValues(
 	   << "motion_window_s " << shortestText(run.motionWindow) << "\n"
 	   << "tolerance_cells " << options.tolerance << "\n"
 	   << "truth_times " << truthTimesName(options.truthTimes) << "\n"
+	   << "traced_at " << run.tracedAt << "\n"
 	   << "scans_total " << n.total << "\n"
 	   << "scans_without_pose " << n.withoutPose << "\n"
 	   << "scans_refused " << n.refused << "\n"

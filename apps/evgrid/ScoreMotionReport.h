@@ -24,6 +24,8 @@ struct TScoreMotionRecord
 {
 	/** CPoseSource::description() */
 	std::string poses;
+	/** What the scans' observed cells were traced at (true or map poses). */
+	std::string tracedAt;
 	/** The map's insertionOptions.motionWindow, seconds. */
 	double motionWindow = 0;
 	TReplayCounts scans;

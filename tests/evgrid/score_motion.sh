@@ -163,6 +163,26 @@ for kind in appeared disappeared; do
   done
 done
 
+# 3b. The observed cells traced at the true poses. Traced at the poses the
+#     map is built at, they say the same as tracing at the map's poses; a file
+#     without the input's times is an error.
+[ "$(value traced_at "$T/room.txt")" = "the map's poses" ] || fail "room: not traced at the map's poses by default"
+run 0 "$EVGRID" score-motion -c "$T/normalize.ini" -i "$room.rawlog" -p "$room.gt.txt" \
+  --truth "$room.motion.gz" --output "$T/room-gt.txt"
+run 0 "$EVGRID" score-motion -c "$T/normalize.ini" -i "$room.rawlog" -p "$room.gt.txt" \
+  --truth "$room.motion.gz" --truth-poses "$room.gt.txt" --output "$T/room-gt-traced.txt"
+[ "$(value traced_at "$T/room-gt-traced.txt")" = "true poses, $room.gt.txt" ] || fail "--truth-poses not reported"
+diff <(grep -v '^traced_at ' "$T/room-gt.txt") <(grep -v '^traced_at ' "$T/room-gt-traced.txt") >/dev/null ||
+  fail "tracing at the map's own poses through --truth-poses changed the scores"
+score room-true "$room" --truth-poses "$room.gt.txt"
+[ "$(value appeared_truth "$T/room-true.txt")" != "$(value appeared_truth "$T/room.txt")" ] ||
+  fail "tracing at the true poses did not change the truth of the slam-posed run"
+awk 'NR <= 100' "$room.gt.txt" >"$T/short.gt.txt"
+run 1 "$EVGRID" score-motion -c "$T/normalize.ini" -i "$room.rawlog" -p "$room.slam.txt" \
+  --truth "$room.motion.gz" --truth-poses "$T/short.gt.txt" --output "$T/x.txt"
+contains "$ERR" "evgrid score-motion: error: $T/short.gt.txt: no pose at the time of 2-D scan 99"
+[ ! -e "$T/x.txt" ] || fail "a failed run wrote its output"
+
 # 4. Deterministic, and quiet with -q.
 run 0 "$EVGRID" score-motion -q -c "$T/normalize.ini" -i "$room.rawlog" -p "$room.slam.txt" \
   --truth "$room.motion.gz" --output "$T/again.txt"
