@@ -57,6 +57,10 @@ freeMargin=0.15
 motionWindow=4.5
 motionMinConflict=0.6
 motionClearance=0.25
+groundRemoval=Height
+minObstacleHeight=0.3
+maxObstacleHeight=3.5
+groundReturns=Nothing
 )ini";
 
 mrpt::maps::CMultiMetricMap mapsFrom(const std::string& ini)
@@ -112,6 +116,10 @@ TEST(MapIni, CreatedFromIniWithEveryOption)
 	EXPECT_EQ(o.motionWindow, 4.5);
 	EXPECT_EQ(o.motionMinConflict, 0.6);
 	EXPECT_EQ(o.motionClearance, 0.25);
+	EXPECT_EQ(o.groundRemoval, GroundRemoval::Height);
+	EXPECT_EQ(o.minObstacleHeight, 0.3);
+	EXPECT_EQ(o.maxObstacleHeight, 3.5);
+	EXPECT_EQ(o.groundReturns, GroundReturns::Nothing);
 }
 
 TEST(MapIni, DefaultsWhenSectionsAreAbsent)
@@ -146,6 +154,10 @@ TEST(MapIni, InsertionOptionsRoundTripThroughIni)
 	o.motionWindow = 1.0 / 7.0;
 	o.motionMinConflict = 0.45;
 	o.motionClearance = 0.0;
+	o.groundRemoval = GroundRemoval::None;
+	o.minObstacleHeight = 1.0 / 9.0;
+	o.maxObstacleHeight = 2.75;
+	o.groundReturns = GroundReturns::Nothing;
 	mrpt::config::CConfigFileMemory ini;
 	o.saveToConfigFile(ini, "opts");
 	CEvidentialGridMap2D::TInsertionOptions back;
@@ -163,11 +175,16 @@ TEST(MapIni, InsertionOptionsRoundTripThroughIni)
 	EXPECT_EQ(back.motionWindow, o.motionWindow);
 	EXPECT_EQ(back.motionMinConflict, o.motionMinConflict);
 	EXPECT_EQ(back.motionClearance, o.motionClearance);
+	EXPECT_EQ(back.groundRemoval, o.groundRemoval);
+	EXPECT_EQ(back.minObstacleHeight, o.minObstacleHeight);
+	EXPECT_EQ(back.maxObstacleHeight, o.maxObstacleHeight);
+	EXPECT_EQ(back.groundReturns, o.groundReturns);
 	for (const char* key :
 		 {"sensorModel", "muF", "muO", "imprecision", "imprecisionProfile",
 		  "sectorWidth", "maxRange", "invalidRangesAsFree", "freeMargin", "fusionRule",
 		  "decayRate", "horizontalTolerance", "conflictHandling", "growthMargin",
-		  "motionWindow", "motionMinConflict", "motionClearance"})
+		  "motionWindow", "motionMinConflict", "motionClearance", "groundRemoval",
+		  "minObstacleHeight", "maxObstacleHeight", "groundReturns"})
 		EXPECT_NE(a.str().find(key), std::string::npos) << key;
 }
 
@@ -194,6 +211,11 @@ TEST(MapIni, InvalidValuesAreRejectedNamingKeyAndValue)
 		{"insertOpts", "motionWindow=inf"},
 		{"insertOpts", "motionMinConflict=1.5"},
 		{"insertOpts", "motionClearance=-1"},
+		{"insertOpts", "groundRemoval=Ransac"},
+		{"insertOpts", "minObstacleHeight=-0.1"},
+		{"insertOpts", "maxObstacleHeight=0.1"},
+		{"insertOpts", "maxObstacleHeight=nan"},
+		{"insertOpts", "groundReturns=Maybe"},
 		{"creationOpts", "resolution=0"},
 		{"creationOpts", "resolution=-0.1"},
 		{"creationOpts", "min_x=20"},
@@ -253,6 +275,12 @@ TEST(BadOptions, InvalidInsertionOptionsStopInsertionNamingTheField)
 		{"motionWindow", [](Options& o) { o.motionWindow = -1.0; }},
 		{"motionMinConflict", [](Options& o) { o.motionMinConflict = 0.0; }},
 		{"motionClearance", [](Options& o) { o.motionClearance = kNaN; }},
+		{"minObstacleHeight", [](Options& o) { o.minObstacleHeight = kInf; }},
+		{"maxObstacleHeight", [](Options& o) { o.maxObstacleHeight = o.minObstacleHeight; }},
+		{"groundRemoval",
+		 [](Options& o) { o.groundRemoval = static_cast<GroundRemoval>(3); }},
+		{"groundReturns",
+		 [](Options& o) { o.groundReturns = static_cast<GroundReturns>(2); }},
 		{"fusionRule", [](Options& o) { o.fusionRule = static_cast<FusionRule>(17); }},
 		{"sensorModel", [](Options& o) { o.sensorModel = static_cast<SensorModel>(9); }},
 		{"conflictHandling",

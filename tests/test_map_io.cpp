@@ -56,6 +56,10 @@ CEvidentialGridMap2D makeMap(double resolution = 0.1)
 	map.insertionOptions.growthMargin = 0.5;
 	map.insertionOptions.muF = 0.6;
 	map.insertionOptions.conflictHandling = ConflictHandling::ToUnknown;
+	map.insertionOptions.groundRemoval = GroundRemoval::Height;
+	map.insertionOptions.minObstacleHeight = 0.15;
+	map.insertionOptions.maxObstacleHeight = 2.5;
+	map.insertionOptions.groundReturns = GroundReturns::Nothing;
 	map.likelihoodOptions.sigma = 0.2;
 	map.likelihoodOptions.decimation = 3;
 	map.likelihoodOptions.unknownAsNeutral = false;
@@ -100,6 +104,12 @@ void expectSameMap(const CEvidentialGridMap2D& a, const CEvidentialGridMap2D& b)
 	EXPECT_EQ(ia.horizontalTolerance, ib.horizontalTolerance);
 	EXPECT_EQ(ia.conflictHandling, ib.conflictHandling);
 	EXPECT_EQ(ia.growthMargin, ib.growthMargin);
+	EXPECT_EQ(ia.freeMargin, ib.freeMargin);
+	EXPECT_EQ(ia.motionWindow, ib.motionWindow);
+	EXPECT_EQ(ia.groundRemoval, ib.groundRemoval);
+	EXPECT_EQ(ia.minObstacleHeight, ib.minObstacleHeight);
+	EXPECT_EQ(ia.maxObstacleHeight, ib.maxObstacleHeight);
+	EXPECT_EQ(ia.groundReturns, ib.groundReturns);
 
 	const auto& la = a.likelihoodOptions;
 	const auto& lb = b.likelihoodOptions;
@@ -153,6 +163,9 @@ void putLE(std::vector<std::uint8_t>& bytes, std::size_t at, std::uint64_t v, in
 /** The bytes version 1 would have written for `map` (whose stamp table fits
  * version 1): today's layout without freeMargin, the motion options and
  * keepsConflict, and stamps without their impact flag. */
+/** groundRemoval, minObstacleHeight, maxObstacleHeight, groundReturns. */
+constexpr std::size_t kCloudOptionBytes = 1 + 8 + 8 + 1;
+
 std::vector<std::uint8_t> asVersion1(const CEvidentialGridMap2D& map)
 {
 	std::vector<std::uint8_t> bytes = test::serialize(map);
@@ -173,8 +186,25 @@ std::vector<std::uint8_t> asVersion1(const CEvidentialGridMap2D& map)
 		bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(at),
 					bytes.begin() + static_cast<std::ptrdiff_t>(at + n));
 	};
+	cut(motion + 24, kCloudOptionBytes);
 	cut(motion, 24);
 	cut(freeMargin, 8);
+	reseal(bytes);
+	return bytes;
+}
+
+/** The map as version 2 wrote it: no cloud options after the motion
+ * options. */
+std::vector<std::uint8_t> asVersion2(const CEvidentialGridMap2D& map)
+{
+	std::vector<std::uint8_t> bytes = test::serialize(map);
+	const std::size_t header = 1 + (bytes[0] & 0x7F) + 1;
+	bytes[header - 1] = 2;
+	const std::size_t insertion = header + 32 + 8;
+	const std::size_t clouds = insertion + 1 + 8 + 8 + 8 + 1 + 8 + 8 + 1 + 8 + 1 + 8 + 8 +
+		1 + 8 + 24;
+	bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(clouds),
+				bytes.begin() + static_cast<std::ptrdiff_t>(clouds + kCloudOptionBytes));
 	reseal(bytes);
 	return bytes;
 }
@@ -322,6 +352,25 @@ TEST(MapIO, EveryTruncationIsDetected)
 	EXPECT_EQ(end.report, "");
 }
 
+TEST(MapIO, VersionTwoFilesStillLoad)
+{
+	// Version 2 had no cloud options: they read as the defaults, and the
+	// rest as it was.
+	CEvidentialGridMap2D original = conflictingMap();
+	original.insertionOptions.groundRemoval = GroundRemoval::None;
+	original.insertionOptions.maxObstacleHeight = 4.0;
+	CEvidentialGridMap2D back;
+	deserialize(asVersion2(original), back);
+	const CEvidentialGridMap2D::TInsertionOptions defaults;
+	EXPECT_EQ(back.insertionOptions.groundRemoval, defaults.groundRemoval);
+	EXPECT_EQ(back.insertionOptions.minObstacleHeight, defaults.minObstacleHeight);
+	EXPECT_EQ(back.insertionOptions.maxObstacleHeight, defaults.maxObstacleHeight);
+	EXPECT_EQ(back.insertionOptions.groundReturns, defaults.groundReturns);
+	original.insertionOptions.groundRemoval = defaults.groundRemoval;
+	original.insertionOptions.maxObstacleHeight = defaults.maxObstacleHeight;
+	expectSameMap(original, back);
+}
+
 TEST(MapIO, VersionOneFilesStillLoad)
 {
 	// Version 1 had no free margin, no motion layer and cells that always
@@ -420,8 +469,8 @@ TEST(MapIO, UnknownVersionIsRejected)
 	auto bytes = serialize(makeMap(0.3));
 	// MRPT's object header: 0x80 | name length, the class name, the version.
 	const std::size_t versionPos = 1 + (bytes[0] & 0x7F);
-	ASSERT_EQ(bytes[versionPos], 2);
-	for (const std::uint8_t v : {3, 4, 0x7F, 0xFF})
+	ASSERT_EQ(bytes[versionPos], 3);
+	for (const std::uint8_t v : {4, 5, 0x7F, 0xFF})
 	{
 		bytes[versionPos] = v;
 		CEvidentialGridMap2D target;

@@ -163,31 +163,34 @@ class CScanInserter
 	{
 	}
 
-	void insert(
-		const mrpt::obs::CObservation2DRangeScan& scan,
-		const std::optional<CPose3D>& pose)
+	/** A 2-D scan or a 3-D cloud. */
+	void insert(const mrpt::obs::CObservation& obs, const std::optional<CPose3D>& pose)
 	{
-		++m_counts.total;
+		TScanCounts& counts =
+			dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs) ? m_scans : m_clouds;
+		++counts.total;
 		if (!pose)
 		{
-			++m_counts.withoutPose;
+			++counts.withoutPose;
 			return;
 		}
-		bool inserted = false;
+		bool taken = false;
 		{
 			CScopedTimer t(m_seconds);
-			inserted = insertScan(m_map, scan, *pose, m_input.place());
+			taken = insertScan(m_map, obs, *pose, m_input.place());
 		}
-		if (!inserted)
+		if (!taken)
 		{
-			++m_counts.rejected;
+			++counts.rejected;
 			return;
 		}
-		++m_counts.inserted;
-		m_growth.afterInsertion(m_map, m_counts.inserted);
+		++counts.inserted;
+		m_growth.afterInsertion(m_map, inserted());
 	}
 
-	const TScanCounts& counts() const { return m_counts; }
+	const TScanCounts& scans() const { return m_scans; }
+	const TScanCounts& clouds() const { return m_clouds; }
+	std::size_t inserted() const { return m_scans.inserted + m_clouds.inserted; }
 	/** Seconds spent in the map's insertion. */
 	double seconds() const { return m_seconds; }
 
@@ -195,7 +198,7 @@ class CScanInserter
 	CEvidentialGridMap2D& m_map;
 	const CInputWalker& m_input;
 	CGrowthRecorder& m_growth;
-	TScanCounts m_counts;
+	TScanCounts m_scans, m_clouds;
 	double m_seconds = 0;
 };
 
@@ -246,20 +249,24 @@ void build(const TBuildOptions& options, SteadyClock::time_point start)
 		 [&inserter](const auto& scan, const auto& pose) {
 			 inserter.insert(scan, pose);
 		 },
-		 [&](double fraction) {
-			 progress.update(fraction, inserter.counts().inserted);
-		 }});
+		 [&](double fraction) { progress.update(fraction, inserter.inserted()); },
+		 [&inserter](const auto& cloud, const auto& pose) { inserter.insert(cloud, pose); }});
 	progress.finish();
-	if (inserter.counts().inserted == 0)
+	if (inserter.inserted() == 0)
 		throw std::runtime_error(
 			options.source.input + ": no scan was inserted (" +
-			scanAccount(inserter.counts()) + ")");
+			scanAccount(inserter.scans()) +
+			(inserter.clouds().total > 0
+				 ? "; " + scanAccount(inserter.clouds(), "3-D clouds")
+				 : std::string()) +
+			")");
 	growth.finish();
 
 	TBuildRecord run;
 	run.input = input.counts();
 	run.poses = poses.description();
-	run.scans = inserter.counts();
+	run.scans = inserter.scans();
+	run.clouds = inserter.clouds();
 	run.frames = growth.frames();
 	run.animationFrames = growth.animationFrames();
 	run.times.reading = input.readingSeconds();

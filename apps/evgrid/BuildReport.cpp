@@ -65,6 +65,14 @@ void writeProducts(
 	std::ostream& os, const TGrowthOptions& growth, const TBuildRecord& run)
 {
 	os << "scans: " << scanAccount(run.scans) << "\n";
+	if (run.clouds.total > 0)
+	{
+		os << "clouds: " << scanAccount(run.clouds, "3-D clouds") << " (";
+		const char* separator = "";
+		for (const auto& [cls, n] : run.input.cloudObservations)
+			os << separator << n << " " << cls, separator = ", ";
+		os << ")\n";
+	}
 	if (run.input.otherObservations.empty()) os << "other observations: none\n";
 	for (const auto& [cls, n] : run.input.otherObservations)
 		os << "other observations: " << n << " " << cls << " (not inserted)\n";
@@ -85,9 +93,9 @@ void writeTiming(std::ostream& os, const TBuildRecord& run)
 		std::max(0.0, t.total - t.reading - t.insertion - t.writing);
 	os << std::fixed << "timing:\n"
 	   << "  total: " << std::setprecision(3) << t.total << " s, "
-	   << std::setprecision(1) << perSecond(run.scans.inserted, t.total)
+	   << std::setprecision(1) << perSecond(run.inserted(), t.total)
 	   << " scans/s (insertion alone: "
-	   << perSecond(run.scans.inserted, t.insertion) << " scans/s)\n"
+	   << perSecond(run.inserted(), t.insertion) << " scans/s)\n"
 	   << "  reading: " << share(t.reading, t.total) << "\n"
 	   << "  insertion: " << share(t.insertion, t.total) << "\n"
 	   << "  writing: " << share(t.writing, t.total) << "\n"
@@ -95,9 +103,9 @@ void writeTiming(std::ostream& os, const TBuildRecord& run)
 }
 }  // namespace
 
-std::string scanAccount(const TScanCounts& scans)
+std::string scanAccount(const TScanCounts& scans, const char* what)
 {
-	return std::to_string(scans.total) + " 2-D scans: " +
+	return std::to_string(scans.total) + " " + what + ": " +
 		std::to_string(scans.inserted) + " inserted, " +
 		std::to_string(scans.withoutPose) + " without a pose, " +
 		std::to_string(scans.rejected) + " refused by the map";
@@ -135,9 +143,10 @@ void printConsoleSummary(
 			"%";
 	};
 	const auto& d = run.decisions;
-	os << kBuildName << ": " << scanAccount(run.scans) << "; " << std::fixed
-	   << std::setprecision(2) << t.total << " s, " << std::setprecision(1)
-	   << perSecond(run.scans.inserted, t.total) << " scans/s\n"
+	os << kBuildName << ": " << scanAccount(run.scans) << "; ";
+	if (run.clouds.total > 0) os << scanAccount(run.clouds, "3-D clouds") << "; ";
+	os << std::fixed << std::setprecision(2) << t.total << " s, " << std::setprecision(1)
+	   << perSecond(run.inserted(), t.total) << " scans/s\n"
 	   << "time: reading " << percent(t.reading) << ", insertion "
 	   << percent(t.insertion) << ", writing " << percent(t.writing) << "\n"
 	   << "map: " << map.getSizeX() << " x " << map.getSizeY() << " cells of "

@@ -18,13 +18,15 @@ class COutputFolder;
 /** What became of the input's 2-D scans. */
 struct TScanCounts
 {
-	/** Every 2-D scan of the input; the three counts below add up to it. */
+	/** Every 2-D scan (or 3-D cloud) of the input; the three counts below
+	 * add up to it. */
 	std::size_t total = 0;
 	std::size_t inserted = 0, withoutPose = 0, rejected = 0;
 };
 
-/** "225 2-D scans: 225 inserted, 0 without a pose, 0 refused by the map" */
-std::string scanAccount(const TScanCounts& scans);
+/** "225 2-D scans: 225 inserted, 0 without a pose, 0 refused by the map";
+ * `what` names the observations ("2-D scans", "3-D clouds"). */
+std::string scanAccount(const TScanCounts& scans, const char* what = "2-D scans");
 
 /** Wall time of a run and of its phases, in seconds. */
 struct TBuildTimes
@@ -39,6 +41,10 @@ struct TBuildRecord
 	/** CPoseSource::description() */
 	std::string poses;
 	TScanCounts scans;
+	/** The 3-D observations read as clouds. */
+	TScanCounts clouds;
+	/** Scans and clouds inserted. */
+	std::size_t inserted() const { return scans.inserted + clouds.inserted; }
 	std::size_t frames = 0, animationFrames = 0;
 	TBuildTimes times;
 	mrpt_evidential::CEvidentialGridMap2D::TDecisionCounts decisions;

@@ -1,10 +1,14 @@
-/* evgrid build: the 2-D scans of a rawlog or a simplemap, with their poses. */
+/* evgrid build: the 2-D scans and 3-D clouds of a rawlog or a simplemap,
+ * with their poses. */
 
 #include "CInputWalker.h"
 
 #include <mrpt/maps/CSimpleMap.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservation3DRangeScan.h>
+#include <mrpt/obs/CObservationPointCloud.h>
+#include <mrpt/obs/CObservationVelodyneScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose3DPDF.h>
@@ -121,12 +125,22 @@ void CInputWalker::handOn(
 	if (!obs) return;
 	const auto* scan =
 		dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(obs.get());
-	if (!scan)
+	if (scan)
+		handlers.onScan(*scan, m_poses.poseOf(*scan, holder, step));
+	else if (handlers.onCloud && isCloud(*obs))
 	{
-		++m_counts.otherObservations[obs->GetRuntimeClass()->className];
-		return;
+		++m_counts.cloudObservations[obs->GetRuntimeClass()->className];
+		handlers.onCloud(*obs, m_poses.poseOf(*obs, holder, step));
 	}
-	handlers.onScan(*scan, m_poses.poseOf(*scan, holder, step));
+	else
+		++m_counts.otherObservations[obs->GetRuntimeClass()->className];
+}
+
+bool isCloud(const mrpt::obs::CObservation& obs)
+{
+	return dynamic_cast<const mrpt::obs::CObservationPointCloud*>(&obs) ||
+		dynamic_cast<const mrpt::obs::CObservationVelodyneScan*>(&obs) ||
+		dynamic_cast<const mrpt::obs::CObservation3DRangeScan*>(&obs);
 }
 
 }  // namespace evgrid

@@ -1,4 +1,5 @@
-/* evgrid build: the 2-D scans of a rawlog or a simplemap, with their poses. */
+/* evgrid build: the 2-D scans and 3-D clouds of a rawlog or a simplemap,
+ * with their poses. */
 #pragma once
 
 #include <mrpt/obs/CObservation.h>
@@ -32,11 +33,19 @@ struct TInputCounts
 	/** Rawlog entries, or simplemap keyframes. */
 	std::size_t entries = 0;
 	std::size_t actions = 0, sensoryFrames = 0, observations = 0;
-	/** Observations that are not 2-D scans, by class name. */
+	/** 3-D observations handed on as clouds (when the walk takes them), by
+	 * class name. */
+	std::map<std::string, std::size_t> cloudObservations;
+	/** Other observations, by class name. */
 	std::map<std::string, std::size_t> otherObservations;
 	/** The rawlog ends with an action that has no sensory frame after it. */
 	bool trailingAction = false;
 };
+
+/** The observation types the map reads as 3-D clouds:
+ * CObservationPointCloud, CObservationVelodyneScan, CObservation3DRangeScan
+ * (CObservationRotatingScan has no elevations in MRPT 2.5.8). */
+bool isCloud(const mrpt::obs::CObservation& obs);
 
 /** Walks the entries of a rawlog (action/sensory-frame pairs, single
  * observations, or both) or the keyframes of a simplemap, and hands on each
@@ -56,6 +65,11 @@ class CInputWalker
 			onScan;
 		/** After an entry or keyframe: the share of the input walked. */
 		std::function<void(double fraction)> afterEntry;
+		/** Each 3-D observation the map reads as a cloud (isCloud()), if
+		 * set; else they count as other observations. */
+		std::function<void(
+			const mrpt::obs::CObservation&, const std::optional<mrpt::poses::CPose3D>&)>
+			onCloud;
 	};
 
 	/** Opens `path` and reads its first object.

@@ -60,7 +60,9 @@ std::optional<CPose3D> CPoseSource::poseOf(
 	{
 		case Holder::SensoryFrame: return CPose3D(m_movementSum);
 		case Holder::Observation:
-			if (!m_odometryReading) return std::nullopt;
+			// Before any odometry (a rawlog without: one scan, a sensor that
+			// stood still), the origin.
+			if (!m_odometryReading) return CPose3D();
 			return CPose3D(*m_odometryReading);
 		case Holder::Keyframe: break;
 	}
@@ -98,7 +100,8 @@ std::string CPoseSource::description() const
 	if (m_simplemap) return "the simplemap's (mean of each keyframe)";
 	if (m_actionsSeen)
 		return "odometry (sum of the actions' movement increments)";
-	return "odometry (latest CObservationOdometry reading)";
+	if (m_odometryReading) return "odometry (latest CObservationOdometry reading)";
+	return "the origin (the rawlog has no odometry)";
 }
 
 }  // namespace evgrid

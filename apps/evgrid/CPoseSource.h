@@ -31,7 +31,8 @@ class CPoseSource
 	{
 		/** A rawlog's sensory frame: the sum of the actions' movements. */
 		SensoryFrame,
-		/** An observation-only rawlog: the latest odometry reading. */
+		/** An observation-only rawlog: the latest odometry reading; the
+		 * origin before the first. */
 		Observation,
 		/** A simplemap keyframe: its pose. */
 		Keyframe

@@ -67,7 +67,9 @@ void compare(const TCompareOptions& options)
 		 },
 		 [&](double fraction) {
 			 building.update(fraction, maps.counts().offered);
-		 }});
+		 },
+		 // 2-D scans only: clouds count among the other observations.
+		 {}});
 	building.finish();
 	const TSideBySideCounts& n = maps.counts();
 	if (n.oursInserted == 0 || n.mrptInserted == 0)

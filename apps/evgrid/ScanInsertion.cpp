@@ -2,6 +2,8 @@
 
 #include "ScanInsertion.h"
 
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
 #include <stdexcept>
 
 #include "CommandLine.h"
@@ -9,7 +11,7 @@
 namespace evgrid
 {
 bool insertScan(
-	mrpt::maps::CMetricMap& map, const mrpt::obs::CObservation2DRangeScan& scan,
+	mrpt::maps::CMetricMap& map, const mrpt::obs::CObservation& scan,
 	const mrpt::poses::CPose3D& pose, const std::string& place,
 	const char* mapName)
 {
@@ -21,7 +23,10 @@ bool insertScan(
 	{
 		const std::string which = mapName ? std::string(mapName) + " " : "";
 		throw std::runtime_error(
-			place + ": " + which + "cannot insert the scan: " + describe(e));
+			place + ": " + which + "cannot insert the " +
+			(dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&scan) ? "scan"
+																			 : "cloud") +
+			": " + describe(e));
 	}
 }
 

@@ -3,21 +3,23 @@
 #pragma once
 
 #include <mrpt/maps/CMetricMap.h>
-#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservation.h>
 #include <mrpt/poses/CPose3D.h>
 
 #include <string>
 
 namespace evgrid
 {
-/** map.insertObservation(scan, pose). Damaged data can parse into a scan the
- * map refuses (a sensor pose that is not a number): the error names it.
+/** map.insertObservation(obs, pose), for a 2-D scan or a 3-D cloud. Damaged
+ * data can parse into one the map refuses (a sensor pose that is not a
+ * number): the error names it.
  * \param place CInputWalker::place(), where the scan is in the input.
  * \param mapName which map, where there is more than one; else null.
  * \return what insertObservation() returns (false: the map declined it).
- * \throws std::runtime_error "PLACE: [MAP ]cannot insert the scan: WHY". */
+ * \throws std::runtime_error "PLACE: [MAP ]cannot insert the scan: WHY"
+ *  ("the cloud" for other observations). */
 bool insertScan(
-	mrpt::maps::CMetricMap& map, const mrpt::obs::CObservation2DRangeScan& scan,
+	mrpt::maps::CMetricMap& map, const mrpt::obs::CObservation& scan,
 	const mrpt::poses::CPose3D& pose, const std::string& place,
 	const char* mapName = nullptr);
 

@@ -230,7 +230,9 @@ void scoreMotion(const TScoreMotionOptions& options)
 		 },
 		 [&](double fraction) {
 			 progress.update(fraction, replay.counts().scored);
-		 }});
+		 },
+		 // 2-D scans only: clouds count among the other observations.
+		 {}});
 	progress.finish();
 	replay.finish();
 

@@ -46,6 +46,8 @@ allow "$(ls $lib/include/mrpt_evidential/grid/*.h)" \
 allow "$(ls $lib/include/mrpt_evidential/scan/*.h)" \
   "^#include ($std|$algebra|$vocabulary|<mrpt_evidential/scan/[A-Za-z]+\.h>|<mrpt/)" \
   "scan: the algebra, MRPT and itself"
+allow "$(ls $lib/include/mrpt_evidential/cloud/*.h)" \
+  "^#include ($std|<mrpt_evidential/cloud/[A-Za-z]+\.h>)" "cloud's public header: its vocabulary only"
 allow "$(ls $lib/include/mrpt_evidential/*.h)" \
   "^#include ($std|<mrpt/|<mrpt_evidential/)" "public headers: no private header"
 forbid "$(ls $lib/include/mrpt_evidential/*.h $lib/include/mrpt_evidential/*/*.h)" \
@@ -54,6 +56,9 @@ allow "$(ls $lib/src/grid/*)" \
   "^#include ($std|$algebra|$vocabulary|$support|<mrpt_evidential/grid/)" "grid sources"
 allow "$(ls $lib/src/scan/*)" \
   "^#include ($std|$algebra|$vocabulary|$support|<mrpt/|<mrpt_evidential/scan/|\"scan/)" "scan sources"
+allow "$(ls $lib/src/cloud/*)" \
+  "^#include ($std|$algebra|$support|<mrpt/|<mrpt_evidential/(scan|cloud)/|\"cloud/)" \
+  "cloud sources: the scan layer below them"
 allow "$(ls $lib/src/insert/*)" \
   "^#include ($std|$algebra|$support|<mrpt/|<mrpt_evidential/(grid|scan)/|\"insert/)" \
   "insertion machinery: grid and scan below it"

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/core/Clock.h>
+#include <mrpt/math/TPoint3D.h>
 #include <mrpt/maps/CMetricMap.h>
 #include <mrpt_evidential/EnumNames.h>
 #include <mrpt_evidential/Motion.h>
@@ -30,6 +32,7 @@ class COccupancyGridMap2D;
 namespace mrpt_evidential
 {
 class CScanImpacts;
+struct PlanarSensorPose;
 
 /** An evidential (Dempster-Shafer) occupancy grid, an MRPT metric map.
  *
@@ -261,7 +264,8 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 		/** `imprecisionProfile`: Box (default) or Gaussian. */
 		ImprecisionProfile imprecisionProfile = ImprecisionProfile::Box;
 		/** `sectorWidth`: angular width of a polar sector, radians (degrees in
-		 * files), [0, 2 pi], default 0 = one sector per beam. */
+		 * files), [0, 2 pi], default 0 = one sector per beam of a 2-D scan,
+		 * 0.5 degree for a 3-D cloud (whose points are grouped by azimuth). */
 		double sectorWidth = 0.0;
 		/** `maxRange`: ranges are used up to this distance, metres, > 0,
 		 * default 20. */
@@ -307,6 +311,20 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 		 * is taken for the error of the robot's pose, not for motion,
 		 * [0, 10], default 0.1. */
 		double motionClearance = 0.10;
+		/** 3-D clouds (CObservationPointCloud, CObservationVelodyneScan,
+		 * CObservation3DRangeScan): `groundRemoval`, where the ground lies:
+		 * Plane (default: fitted to each cloud, the robot's base plane when
+		 * none is found), Height (the robot's base plane, z = 0 in its
+		 * frame) or None (no ground: every point is an obstacle). */
+		GroundRemoval groundRemoval = GroundRemoval::Plane;
+		/** `minObstacleHeight`, `maxObstacleHeight`: a cloud's points from
+		 * min to max metres above the ground are obstacles; lower ones are
+		 * ground, higher ones (above the robot: branches, a barrier)
+		 * nothing. 0 <= min < max <= 1000, defaults 0.2 and 2.0. */
+		double minObstacleHeight = 0.2, maxObstacleHeight = 2.0;
+		/** `groundReturns`: what a ground point proves: FreeSpace (default:
+		 * free space up to it along its azimuth) or Nothing. */
+		GroundReturns groundReturns = GroundReturns::FreeSpace;
 
 		/** Reads the keys above from `section`; absent keys keep their value.
 		 * \throws std::invalid_argument naming the key and value of the first
@@ -429,6 +447,18 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	bool insertScan(
 		const mrpt::obs::CObservation2DRangeScan& scan,
 		const mrpt::poses::CPose3D& robotPose);
+	/** Fuses a 3-D observation's cloud; false for a type that has none. */
+	bool insertCloud(const mrpt::obs::CObservation& obs, const mrpt::poses::CPose3D& robotPose);
+	/** The points of a 3-D observation in the robot's frame, and its sensor
+	 * pose on the robot; nothing for a type that holds no cloud. */
+	std::optional<mrpt::poses::CPose3D> cloudInRobotFrame(
+		const mrpt::obs::CObservation& obs, std::vector<mrpt::math::TPoint3Df>& points) const;
+	/** Fuses the workspace's polar grid, built for an observation of time
+	 * `stamp` taken at `sensor`. */
+	void fusePolarGrid(const PlanarSensorPose& sensor, mrpt::Clock::time_point stamp);
+	/** \throws std::invalid_argument "... the WHAT's pose is not finite: ..."
+	 *  if a coordinate is not finite. */
+	static void requireFinitePose(const mrpt::poses::CPose3D& sensorPose, const char* what);
 	/** Fuses the scan's cells into a map that keeps conflict. */
 	void fuseKeepingConflict(const CScanImpacts& impacts);
 	/** Fuses the scan's cells into a map without conflict, and settles its

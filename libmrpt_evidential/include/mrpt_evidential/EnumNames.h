@@ -6,6 +6,7 @@
 
 #include <mrpt/typemeta/TEnumType.h>
 #include <mrpt_evidential/algebra/combination.h>
+#include <mrpt_evidential/cloud/GroundRemoval.h>
 #include <mrpt_evidential/scan/SensorModel.h>
 
 MRPT_ENUM_TYPE_BEGIN(mrpt_evidential::SensorModel)
@@ -31,4 +32,15 @@ MRPT_ENUM_TYPE_BEGIN(mrpt_evidential::ConflictHandling)
 MRPT_FILL_ENUM_MEMBER(mrpt_evidential::ConflictHandling, Keep);
 MRPT_FILL_ENUM_MEMBER(mrpt_evidential::ConflictHandling, ToUnknown);
 MRPT_FILL_ENUM_MEMBER(mrpt_evidential::ConflictHandling, Normalize);
+MRPT_ENUM_TYPE_END()
+
+MRPT_ENUM_TYPE_BEGIN(mrpt_evidential::GroundRemoval)
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::GroundRemoval, None);
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::GroundRemoval, Plane);
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::GroundRemoval, Height);
+MRPT_ENUM_TYPE_END()
+
+MRPT_ENUM_TYPE_BEGIN(mrpt_evidential::GroundReturns)
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::GroundReturns, FreeSpace);
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::GroundReturns, Nothing);
 MRPT_ENUM_TYPE_END()

@@ -262,6 +262,15 @@ std::optional<TInvalidOption>
 		return TInvalidOption{"motionMinConflict", "in (0, 1]", motionMinConflict};
 	if (!(motionClearance >= 0.0 && motionClearance <= 10.0))
 		return TInvalidOption{"motionClearance", "in [0, 10] (m)", motionClearance};
+	if (!isMember(groundRemoval))
+		return TInvalidOption{"groundRemoval", "a known removal", double(groundRemoval)};
+	if (!(minObstacleHeight >= 0.0 && minObstacleHeight < 1000.0))
+		return TInvalidOption{"minObstacleHeight", "in [0, 1000) (m)", minObstacleHeight};
+	if (!(maxObstacleHeight > minObstacleHeight && maxObstacleHeight <= 1000.0))
+		return TInvalidOption{
+			"maxObstacleHeight", "in (minObstacleHeight, 1000] (m)", maxObstacleHeight};
+	if (!isMember(groundReturns))
+		return TInvalidOption{"groundReturns", "a known meaning", double(groundReturns)};
 	return std::nullopt;
 }
 
@@ -318,6 +327,10 @@ void CEvidentialGridMap2D::TInsertionOptions::loadFromConfigFile(
 	detail::readDouble(source, section, "motionWindow", o.motionWindow);
 	detail::readDouble(source, section, "motionMinConflict", o.motionMinConflict);
 	detail::readDouble(source, section, "motionClearance", o.motionClearance);
+	detail::readEnum(source, section, "groundRemoval", o.groundRemoval);
+	detail::readDouble(source, section, "minObstacleHeight", o.minObstacleHeight);
+	detail::readDouble(source, section, "maxObstacleHeight", o.maxObstacleHeight);
+	detail::readEnum(source, section, "groundReturns", o.groundReturns);
 	// The value in the message is the text of the file, as the user wrote it.
 	detail::throwIfInvalid(source, section, o.firstInvalid());
 	*this = o;
@@ -337,7 +350,7 @@ void CEvidentialGridMap2D::TInsertionOptions::saveToConfigFile(
 	writeValue(target, section, "imprecisionProfile", imprecisionProfile,
 			   "Box or Gaussian");
 	writeValue(target, section, "sectorWidth", sectorWidth * toDegrees,
-			   "deg, 0 = one sector per beam");
+			   "deg, 0 = one sector per beam (0.5 for clouds)");
 	writeValue(target, section, "maxRange", maxRange, "m");
 	writeValue(target, section, "invalidRangesAsFree", invalidRangesAsFree,
 			   "a beam without return proves free space");
@@ -358,6 +371,14 @@ void CEvidentialGridMap2D::TInsertionOptions::saveToConfigFile(
 			   "least conflict of one cause for a motion event, (0, 1]");
 	writeValue(target, section, "motionClearance", motionClearance,
 			   "m from static structure below which a change is pose error");
+	writeValue(target, section, "groundRemoval", groundRemoval,
+			   "3-D clouds' ground: Plane, Height or None");
+	writeValue(target, section, "minObstacleHeight", minObstacleHeight,
+			   "m above the ground where a cloud's obstacles begin");
+	writeValue(target, section, "maxObstacleHeight", maxObstacleHeight,
+			   "m above the ground where they end (higher points: nothing)");
+	writeValue(target, section, "groundReturns", groundReturns,
+			   "what a ground point proves: FreeSpace or Nothing");
 }
 
 void CEvidentialGridMap2D::TInsertionOptions::dumpToTextStream(

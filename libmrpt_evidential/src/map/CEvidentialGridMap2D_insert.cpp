@@ -22,10 +22,22 @@ bool CEvidentialGridMap2D::internal_insertObservation(
 	const mrpt::obs::CObservation& obs,
 	const std::optional<const mrpt::poses::CPose3D>& robotPose)
 {
-	// Other observation types are not for this map: not an error.
-	const auto* scan = dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs);
-	if (!scan) return false;
-	return insertScan(*scan, robotPose ? *robotPose : mrpt::poses::CPose3D());
+	const mrpt::poses::CPose3D pose = robotPose ? *robotPose : mrpt::poses::CPose3D();
+	if (const auto* scan = dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs))
+		return insertScan(*scan, pose);
+	// Clouds; other observation types are not for this map: not an error.
+	return insertCloud(obs, pose);
+}
+
+void CEvidentialGridMap2D::requireFinitePose(
+	const mrpt::poses::CPose3D& sensorPose, const char* what)
+{
+	for (const double v : {sensorPose.x(), sensorPose.y(), sensorPose.z(), sensorPose.yaw(),
+						   sensorPose.pitch(), sensorPose.roll()})
+		if (!std::isfinite(v))
+			throw std::invalid_argument(
+				std::string("CEvidentialGridMap2D: the ") + what + "'s pose is not finite: " +
+				sensorPose.asString());
 }
 
 bool CEvidentialGridMap2D::insertScan(
@@ -36,12 +48,7 @@ bool CEvidentialGridMap2D::insertScan(
 	if (const auto bad = insertionOptions.firstInvalidOfTheMap())
 		throw std::invalid_argument(bad->describe());
 	const mrpt::poses::CPose3D sensorPose3D = robotPose + scan.sensorPose;
-	for (const double v : {sensorPose3D.x(), sensorPose3D.y(), sensorPose3D.z(),
-						   sensorPose3D.yaw(), sensorPose3D.pitch(), sensorPose3D.roll()})
-		if (!std::isfinite(v))
-			throw std::invalid_argument(
-				"CEvidentialGridMap2D: the scan's pose is not finite: " +
-				sensorPose3D.asString());
+	requireFinitePose(sensorPose3D, "scan");
 	const auto sensor =
 		planarSensorPose(sensorPose3D, insertionOptions.horizontalTolerance);
 	if (!sensor)
@@ -53,19 +60,26 @@ bool CEvidentialGridMap2D::insertScan(
 		return false;
 	}
 
-	CPolarSourceGrid& polar = m_workspace->sourceGrid;
+	m_workspace->sourceGrid.build(scan, insertionOptions.sourceGridOptions(getResolution()));
+	fusePolarGrid(*sensor, scan.timestamp);
+	return true;
+}
+
+void CEvidentialGridMap2D::fusePolarGrid(
+	const PlanarSensorPose& sensor, mrpt::Clock::time_point stamp)
+{
+	const CPolarSourceGrid& polar = m_workspace->sourceGrid;
 	CPolarToCartesian& transform = m_workspace->transform;
-	polar.build(scan, insertionOptions.sourceGridOptions(getResolution()));
 	m_grid.setDecayRate(insertionOptions.decayRate);
 	m_grid.setKeepsConflict(
 		insertionOptions.conflictHandling == ConflictHandling::Keep);
 	m_grid.setEventRetention(insertionOptions.motionWindow);
-	m_grid.beginInsertion(mrpt::Clock::toDouble(scan.timestamp));
+	m_grid.beginInsertion(mrpt::Clock::toDouble(stamp));
 	invalidateLikelihoodCache();
 
-	transform.setup(polar, *sensor);
+	transform.setup(polar, sensor);
 	const Box& box = transform.box();
-	if (box.empty()) return true;
+	if (box.empty()) return;
 	if (!m_grid.growToInclude(
 			box.xMin, box.xMax, box.yMin, box.yMax, insertionOptions.growthMargin,
 			m_maxCells) &&
@@ -74,7 +88,7 @@ bool CEvidentialGridMap2D::insertScan(
 		m_budgetWarningShown = true;
 		std::cerr << "[CEvidentialGridMap2D] warning: the grid cannot grow to "
 					 "hold a scan at ("
-				  << sensor->x << ", " << sensor->y << ") within its budget of "
+				  << sensor.x << ", " << sensor.y << ") within its budget of "
 				  << m_maxCells
 				  << " cells (creationOpts maxCells) and 1e9 m of the origin; "
 					 "such scans are inserted only where they overlap the grid. "
@@ -82,12 +96,11 @@ bool CEvidentialGridMap2D::insertScan(
 	}
 
 	CScanImpacts& impacts = m_workspace->impacts;
-	impacts.build(polar, transform, *sensor, geometry());
+	impacts.build(polar, transform, sensor, geometry());
 	if (m_grid.keepsConflict())
 		fuseKeepingConflict(impacts);
 	else
 		fuseWithMotion(impacts);
-	return true;
 }
 
 void CEvidentialGridMap2D::fuseKeepingConflict(const CScanImpacts& impacts)

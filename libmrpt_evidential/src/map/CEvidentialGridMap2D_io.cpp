@@ -1,7 +1,7 @@
 /* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
  * CEvidentialGridMap2D: serialization (CSerializable).
  *
- * Layout of version 2, after MRPT's object header (class name, version byte),
+ * Layout of version 3, after MRPT's object header (class name, version byte),
  * every number little-endian:
  *   geometry     f64 xMin, f64 yMin, f64 resolution, i32 sizeX, i32 sizeY
  *   budget       u64 maxCells
@@ -11,7 +11,9 @@
  *                f64 decayRate,
  *                f64 horizontalTolerance (rad), u8 conflictHandling,
  *                f64 growthMargin, f64 motionWindow, f64 motionMinConflict,
- *                f64 motionClearance
+ *                f64 motionClearance, u8 groundRemoval,
+ *                f64 minObstacleHeight, f64 maxObstacleHeight,
+ *                u8 groundReturns
  *   likelihood   f64 occupiedMass, f64 maxCorrsDistance, f64 sigma, f64 zHit,
  *                f64 zRandom, f64 maxRange, u32 decimation,
  *                u8 unknownAsNeutral
@@ -23,7 +25,8 @@
  *                u16 aside, u16 free, u16 occupied, u16 stamp: the conflict
  *                (keepsConflict) or the motion event, and the normal part's
  *                free and occupied masses (QuantizedCell)
- * Version 1 had no freeMargin (read as 0), no motion options and no
+ * Version 2 had no cloud options (groundRemoval to groundReturns: read as
+ * the defaults). Version 1 had no freeMargin (read as 0), no motion options and no
  * keepsConflict: its cells always
  * kept conflict. A file of a map whose conflictHandling is Keep still does;
  * any other has its conflict (0 but for rounding) dropped. Version 0 had
@@ -149,7 +152,7 @@ std::uint16_t getU16(const std::uint8_t* p)
 }
 }  // namespace
 
-uint8_t CEvidentialGridMap2D::serializeGetVersion() const { return 2; }
+uint8_t CEvidentialGridMap2D::serializeGetVersion() const { return 3; }
 
 void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 {
@@ -170,6 +173,9 @@ void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 	writeEnum(ar, io.conflictHandling);
 	ar << io.growthMargin << io.motionWindow << io.motionMinConflict
 	   << io.motionClearance;
+	writeEnum(ar, io.groundRemoval);
+	ar << io.minObstacleHeight << io.maxObstacleHeight;
+	writeEnum(ar, io.groundReturns);
 
 	const TLikelihoodOptions& lo = likelihoodOptions;
 	ar << lo.occupiedMass << lo.maxCorrsDistance << lo.sigma << lo.zHit
@@ -209,7 +215,7 @@ void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 
 void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 {
-	if (version > 2) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+	if (version > 3) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
 
 	// Everything goes into locals: the map changes only once all is read,
 	// checked and validated.
@@ -245,6 +251,12 @@ void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 	io.conflictHandling = readEnum<ConflictHandling>(ar, "conflictHandling");
 	ar >> io.growthMargin;
 	if (version >= 2) ar >> io.motionWindow >> io.motionMinConflict >> io.motionClearance;
+	if (version >= 3)
+	{
+		io.groundRemoval = readEnum<GroundRemoval>(ar, "groundRemoval");
+		ar >> io.minObstacleHeight >> io.maxObstacleHeight;
+		io.groundReturns = readEnum<GroundReturns>(ar, "groundReturns");
+	}
 
 	TLikelihoodOptions lo;
 	ar >> lo.occupiedMass >> lo.maxCorrsDistance >> lo.sigma >> lo.zHit >>

@@ -6,6 +6,7 @@
 #include <mrpt_evidential/scan/CPolarSourceGrid.h>
 
 #include <memory>
+#include <vector>
 #include <mutex>
 
 #include "insert/MotionDetector.h"
@@ -21,6 +22,10 @@ struct CEvidentialGridMap2D::TWorkspace
 	CPolarToCartesian transform;
 	CScanImpacts impacts;
 	CMotionDetector motion;
+	/** A 3-D observation's points in the robot's frame, and its returns by
+	 * sector. */
+	std::vector<mrpt::math::TPoint3Df> cloudPoints;
+	TCloudReturns cloudReturns;
 	/** The likelihood field, or null until a likelihood needs it. The mutex
 	 * guards the pointer: readers of the map may race to build it. */
 	std::mutex likelihoodMutex;

@@ -74,14 +74,7 @@ void CPolarSourceGrid::build(
 		m_firstAngle = 0.0;
 		m_sectorCount = nBeams;
 	}
-	m_binSize = options.binSize;
-	m_freeMargin = options.freeMargin;
-	m_binCount =
-		static_cast<std::size_t>(std::ceil(options.maxRange / options.binSize));
-
-	m_impacts.resize(m_sectorCount);
-	for (auto& impacts : m_impacts) impacts.clear();
-	m_observed.assign(m_sectorCount, 0);
+	startSectors(options);
 
 	constexpr double kNoReturn = std::numeric_limits<double>::infinity();
 	const double invSpacing = 1.0 / m_spacing;
@@ -118,6 +111,55 @@ void CPolarSourceGrid::build(
 		m_observed[sector] = 1;
 	}
 
+	buildRows(options);
+}
+
+void CPolarSourceGrid::build(const TCloudReturns& returns, const TSourceGridOptions& options)
+{
+	options.validate();
+	const std::size_t n = returns.sectorCount();
+	if (n == 0 || returns.freeReach.size() != n)
+		throw std::invalid_argument(
+			"cloud returns: " + std::to_string(n) + " sectors of impacts and " +
+			std::to_string(returns.freeReach.size()) + " free reaches");
+	m_sectorCount = n;
+	m_spacing = 2 * M_PI / static_cast<double>(n);
+	m_firstAngle = -M_PI;
+	m_fullTurn = true;
+	startSectors(options);
+	for (std::size_t s = 0; s < n; ++s)
+	{
+		const double reach = returns.freeReach[s];
+		if (!(reach >= 0.0))
+			throw std::invalid_argument(
+				"cloud returns: free reach " + std::to_string(reach) + " of sector " +
+				std::to_string(s));
+		for (const double r : returns.impacts[s])
+			if (!(r >= 0.0))
+				throw std::invalid_argument(
+					"cloud returns: impact range " + std::to_string(r) + " in sector " +
+					std::to_string(s));
+		m_impacts[s] = returns.impacts[s];
+		m_freeReach[s] = reach;
+		m_observed[s] = !m_impacts[s].empty() || reach > 0.0;
+	}
+	buildRows(options);
+}
+
+void CPolarSourceGrid::startSectors(const TSourceGridOptions& options)
+{
+	m_binSize = options.binSize;
+	m_freeMargin = options.freeMargin;
+	m_binCount =
+		static_cast<std::size_t>(std::ceil(options.maxRange / options.binSize));
+	m_impacts.resize(m_sectorCount);
+	for (auto& impacts : m_impacts) impacts.clear();
+	m_freeReach.assign(m_sectorCount, 0.0);
+	m_observed.assign(m_sectorCount, 0);
+}
+
+void CPolarSourceGrid::buildRows(const TSourceGridOptions& options)
+{
 	m_layouts.resize(m_sectorCount);
 	m_runs.clear();
 	m_masses.clear();
@@ -126,10 +168,18 @@ void CPolarSourceGrid::build(
 	{
 		std::vector<double>& impacts = m_impacts[s];
 		std::sort(impacts.begin(), impacts.end());
-		m_layouts[s] = detail::appendSectorRow(
+		TSectorLayout& layout = m_layouts[s];
+		layout = detail::appendSectorRow(
 			options.sensorModel, impacts.data(), impacts.size(), m_binSize,
 			m_binCount, m_runs, m_masses);
-		m_maxInformedBins = std::max(m_maxInformedBins, m_layouts[s].informedBins);
+		if (impacts.empty() && m_freeReach[s] > 0.0)
+		{
+			// Only ground returns: the space they crossed.
+			layout.freeBins = binOfRange(m_freeReach[s]);
+			layout.freeMass = layout.freeBins > 0 ? options.sensorModel.muF : 0.0;
+			layout.informedBins = layout.freeBins;
+		}
+		m_maxInformedBins = std::max(m_maxInformedBins, layout.informedBins);
 	}
 }
 

@@ -48,7 +48,30 @@ struct TSourceGridOptions
 	void validate() const;
 };
 
-/** The polar SourceGrid of one 2-D scan, in the sensor's frame.
+/** The returns of a 3-D cloud, already sorted out (ground, obstacles) and
+ * grouped by azimuth: a full turn of sectors, sector s centred at
+ * -pi + s 2 pi / sectorCount() radians. Ranges are horizontal, metres, from
+ * the sensor's vertical axis. */
+struct TCloudReturns
+{
+	/** Per sector, the ranges of its obstacle points: its impacts. */
+	std::vector<std::vector<double>> impacts;
+	/** Per sector, the farthest range that a return proved free without
+	 * being an impact (a ground point); 0 for none. */
+	std::vector<double> freeReach;
+
+	std::size_t sectorCount() const { return impacts.size(); }
+	/** Empties every sector, keeping `sectors` of them and their storage. */
+	void reset(std::size_t sectors)
+	{
+		impacts.resize(sectors);
+		for (auto& ranges : impacts) ranges.clear();
+		freeReach.assign(sectors, 0.0);
+	}
+};
+
+/** The polar SourceGrid of one 2-D scan or 3-D cloud, in the sensor's
+ * frame.
  *
  * Sector s is centred at angle firstSectorAngle() + s * sectorSpacing()
  * (radians, counterclockwise, 0 = the sensor's forward axis), so angles grow
@@ -71,6 +94,17 @@ class CPolarSourceGrid
 	void build(
 		const mrpt::obs::CObservation2DRangeScan& scan,
 		const TSourceGridOptions& options);
+	/** Rebuilds the grid from a cloud's returns: a full turn, sector s of
+	 * `returns` is sector s here (options.sectorWidth is not used: the
+	 * returns were grouped with it). A sector with impacts gets the sensor
+	 * model's row of them, as a scan's sector; one with only a free reach r,
+	 * m(F) = muF up to r (one beam's proof, whatever the model) and nothing
+	 * beyond. A free reach beyond a sector's nearest impact proves nothing
+	 * behind the impact.
+	 * \throws std::invalid_argument if the options are invalid, the returns
+	 *  have no sector, their two vectors differ in size, or an impact or
+	 *  free reach is negative or NaN. */
+	void build(const TCloudReturns& returns, const TSourceGridOptions& options);
 
 	std::size_t sectorCount() const { return m_sectorCount; }
 	std::size_t binCount() const { return m_binCount; }
@@ -132,6 +166,12 @@ class CPolarSourceGrid
 	}
 
    private:
+	/** Sets the bins, margin and per-sector storage for m_sectorCount
+	 * sectors. */
+	void startSectors(const TSourceGridOptions& options);
+	/** Writes every sector's row from m_impacts and m_freeReach. */
+	void buildRows(const TSourceGridOptions& options);
+
 	std::size_t m_sectorCount = 0, m_binCount = 0;
 	double m_binSize = 0.0, m_firstAngle = 0.0, m_spacing = 0.0, m_freeMargin = 0.0;
 	bool m_fullTurn = false;
@@ -141,6 +181,7 @@ class CPolarSourceGrid
 	std::vector<char> m_observed;
 	std::size_t m_maxInformedBins = 0;
 	std::vector<std::vector<double>> m_impacts;  //!< per sector, reused
+	std::vector<double> m_freeReach;  //!< per sector, 0 for scans
 };
 
 }  // namespace mrpt_evidential

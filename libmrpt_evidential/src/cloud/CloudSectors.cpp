@@ -1,0 +1,70 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT. */
+
+#include "cloud/CloudSectors.h"
+
+#include <cmath>
+
+#include "cloud/GroundPlane.h"
+
+namespace mrpt_evidential
+{
+TCloudCounts sortCloudIntoSectors(
+	const std::vector<mrpt::math::TPoint3Df>& points,
+	const mrpt::math::TPoint3D& sensor, const mrpt::poses::CPose3D& robotPose,
+	const TCloudRules& rules, TCloudReturns& out)
+{
+	TCloudCounts counts;
+	const auto sectors = static_cast<std::size_t>(
+		std::max(1L, std::lround(2 * M_PI / rules.sectorWidth)));
+	out.reset(sectors);
+	const double spacing = 2 * M_PI / static_cast<double>(sectors);
+
+	TGroundPlane ground;  // the robot's base plane
+	if (rules.groundRemoval == GroundRemoval::Plane)
+		if (const auto plane = fitGroundPlane(points, TGroundFit()))
+			ground = *plane, counts.planeFound = true;
+
+	double sx, sy, sz;
+	robotPose.composePoint(sensor.x, sensor.y, sensor.z, sx, sy, sz);
+	for (const auto& p : points)
+	{
+		const double dx0 = p.x - sensor.x, dy0 = p.y - sensor.y, dz0 = p.z - sensor.z;
+		if (!(std::isfinite(dx0) && std::isfinite(dy0) && std::isfinite(dz0)) ||
+			dx0 * dx0 + dy0 * dy0 + dz0 * dz0 < kNoReturnDistance * kNoReturnDistance)
+		{
+			++counts.dropped;
+			continue;
+		}
+		++counts.used;
+		bool obstacle = true;
+		if (rules.groundRemoval != GroundRemoval::None)
+		{
+			const double h = ground.heightOf(p);
+			if (h > rules.maxObstacleHeight)
+			{
+				++counts.aboveRobot;
+				continue;
+			}
+			obstacle = h >= rules.minObstacleHeight;
+		}
+		double wx, wy, wz;
+		robotPose.composePoint(p.x, p.y, p.z, wx, wy, wz);
+		const double dx = wx - sx, dy = wy - sy;
+		const double range = std::hypot(dx, dy);
+		// Nearest sector centre; the last one wraps to the first.
+		const auto s = static_cast<std::size_t>(std::lround((std::atan2(dy, dx) + M_PI) / spacing)) %
+			sectors;
+		if (obstacle)
+		{
+			++counts.obstacles;
+			out.impacts[s].push_back(range);
+			continue;
+		}
+		++counts.ground;
+		if (rules.groundReturns == GroundReturns::FreeSpace)
+			out.freeReach[s] = std::max(out.freeReach[s], range);
+	}
+	return counts;
+}
+
+}  // namespace mrpt_evidential

@@ -1,0 +1,106 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT. */
+
+#include "cloud/GroundPlane.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace mrpt_evidential
+{
+namespace
+{
+/** RANSAC's tries: with a ground share of 30 % and more, the chance that no
+ * try draws three ground points is below 1e-6. */
+constexpr int kTries = 500;
+/** Candidates scored per try, at most: the rest only refine the plane. */
+constexpr std::size_t kSample = 3000;
+
+/** The plane through three points, if they span one that is not steeper
+ * than the rules allow. */
+std::optional<TGroundPlane> planeThrough(
+	const mrpt::math::TPoint3Df& p, const mrpt::math::TPoint3Df& q,
+	const mrpt::math::TPoint3Df& r, double maxSlope)
+{
+	const double ux = q.x - p.x, uy = q.y - p.y, uz = q.z - p.z;
+	const double vx = r.x - p.x, vy = r.y - p.y, vz = r.z - p.z;
+	const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+	const double norm = std::sqrt(nx * nx + ny * ny + nz * nz);
+	if (!(norm > 1e-9) || std::abs(nz) < std::cos(maxSlope) * norm) return std::nullopt;
+	TGroundPlane plane;
+	plane.a = -nx / nz;
+	plane.b = -ny / nz;
+	plane.c = p.z - plane.a * p.x - plane.b * p.y;
+	return plane;
+}
+
+/** Least squares of z = a x + b y + c over the inliers of `plane`; the
+ * plane itself when they do not fix one. */
+TGroundPlane refine(
+	const std::vector<mrpt::math::TPoint3Df>& points, const TGroundPlane& plane,
+	double inlierDistance, std::size_t& inliers)
+{
+	double sxx = 0, sxy = 0, syy = 0, sx = 0, sy = 0, n = 0, sxz = 0, syz = 0, sz = 0;
+	for (const auto& p : points)
+	{
+		if (std::abs(plane.heightOf(p)) > inlierDistance) continue;
+		const double x = p.x, y = p.y, z = p.z;
+		sxx += x * x, sxy += x * y, syy += y * y, sx += x, sy += y, n += 1;
+		sxz += x * z, syz += y * z, sz += z;
+	}
+	inliers = static_cast<std::size_t>(n);
+	// Cramer's rule on the normal equations.
+	const double det = sxx * (syy * n - sy * sy) - sxy * (sxy * n - sy * sx) +
+		sx * (sxy * sy - syy * sx);
+	if (!(std::abs(det) > 1e-9 * std::max(1.0, n * n * n))) return plane;
+	TGroundPlane out;
+	out.a = (sxz * (syy * n - sy * sy) - sxy * (syz * n - sy * sz) +
+			 sx * (syz * sy - syy * sz)) / det;
+	out.b = (sxx * (syz * n - sz * sy) - sxz * (sxy * n - sy * sx) +
+			 sx * (sxy * sz - syz * sx)) / det;
+	out.c = (sxx * (syy * sz - sy * syz) - sxy * (sxy * sz - syz * sx) +
+			 sxz * (sxy * sy - syy * sx)) / det;
+	return out;
+}
+}  // namespace
+
+std::optional<TGroundPlane> fitGroundPlane(
+	const std::vector<mrpt::math::TPoint3Df>& points, const TGroundFit& fit)
+{
+	// Ground can only be low: within the offset and the steepest slope of
+	// the base plane.
+	std::vector<mrpt::math::TPoint3Df> low;
+	const double slope = std::tan(fit.maxSlope);
+	for (const auto& p : points)
+		if (std::abs(p.z) <= fit.maxOffset + slope * std::hypot(p.x, p.y)) low.push_back(p);
+	if (low.size() < std::max<std::size_t>(fit.minInliers, 3)) return std::nullopt;
+
+	std::vector<mrpt::math::TPoint3Df> sample;
+	const std::size_t stride = (low.size() + kSample - 1) / kSample;
+	for (std::size_t i = 0; i < low.size(); i += stride) sample.push_back(low[i]);
+
+	std::minstd_rand rng(1);
+	std::uniform_int_distribution<std::size_t> pick(0, sample.size() - 1);
+	std::optional<TGroundPlane> best;
+	std::size_t bestCount = 0;
+	for (int t = 0; t < kTries; ++t)
+	{
+		const auto plane = planeThrough(
+			sample[pick(rng)], sample[pick(rng)], sample[pick(rng)], fit.maxSlope);
+		if (!plane || std::abs(plane->c) > fit.maxOffset) continue;
+		std::size_t count = 0;
+		for (const auto& p : sample) count += std::abs(plane->heightOf(p)) <= fit.inlierDistance;
+		if (count > bestCount) bestCount = count, best = plane;
+	}
+	if (!best) return std::nullopt;
+	std::size_t inliers = 0;
+	const TGroundPlane refined = refine(low, *best, fit.inlierDistance, inliers);
+	const double share = static_cast<double>(inliers) / static_cast<double>(low.size());
+	if (inliers < fit.minInliers || share < fit.minInlierShare) return std::nullopt;
+	// The refined plane must still obey the rules; else keep RANSAC's.
+	const double tilt = std::atan(std::hypot(refined.a, refined.b));
+	if (!(tilt <= fit.maxSlope && std::abs(refined.c) <= fit.maxOffset)) return best;
+	return refined;
+}
+
+}  // namespace mrpt_evidential

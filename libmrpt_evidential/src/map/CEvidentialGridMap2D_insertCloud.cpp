@@ -1,0 +1,147 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
+ * CEvidentialGridMap2D: inserting 3-D observations (point clouds, Velodyne
+ * scans, depth cameras): their points in the robot's frame, told apart and
+ * grouped by azimuth (cloud/CloudSectors.h), then fused as a scan's sectors
+ * are. */
+
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/obs/CObservation3DRangeScan.h>
+#include <mrpt/obs/CObservationPointCloud.h>
+#include <mrpt/obs/CObservationVelodyneScan.h>
+#include <mrpt/poses/CPose3D.h>
+#include <mrpt_evidential/CEvidentialGridMap2D.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "cloud/CloudSectors.h"
+#include "map/MapWorkspace.h"
+
+using namespace mrpt_evidential;
+
+namespace
+{
+/** Appends the points of a cloud given in the sensor's frame, in the
+ * robot's. */
+template <typename Coordinates>
+void appendInRobotFrame(
+	const mrpt::poses::CPose3D& sensorPose, std::size_t n, Coordinates&& coordinate,
+	std::vector<mrpt::math::TPoint3Df>& out)
+{
+	out.reserve(out.size() + n);
+	for (std::size_t i = 0; i < n; ++i)
+	{
+		double x, y, z;
+		const mrpt::math::TPoint3Df p = coordinate(i);
+		sensorPose.composePoint(p.x, p.y, p.z, x, y, z);
+		out.emplace_back(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
+	}
+}
+
+void pointsOf(
+	const mrpt::maps::CPointsMap& cloud, const mrpt::poses::CPose3D& sensorPose,
+	std::vector<mrpt::math::TPoint3Df>& out)
+{
+	const auto& xs = cloud.getPointsBufferRef_x();
+	const auto& ys = cloud.getPointsBufferRef_y();
+	const auto& zs = cloud.getPointsBufferRef_z();
+	appendInRobotFrame(sensorPose, cloud.size(), [&](std::size_t i) {
+		return mrpt::math::TPoint3Df(xs[i], ys[i], zs[i]);
+	}, out);
+}
+
+void pointsOf(
+	const mrpt::obs::CObservationVelodyneScan::TPointCloud& cloud,
+	const mrpt::poses::CPose3D& sensorPose, std::vector<mrpt::math::TPoint3Df>& out)
+{
+	appendInRobotFrame(sensorPose, cloud.size(), [&](std::size_t i) {
+		return mrpt::math::TPoint3Df(cloud.x[i], cloud.y[i], cloud.z[i]);
+	}, out);
+}
+}  // namespace
+
+std::optional<mrpt::poses::CPose3D> CEvidentialGridMap2D::cloudInRobotFrame(
+	const mrpt::obs::CObservation& obs, std::vector<mrpt::math::TPoint3Df>& points) const
+{
+	points.clear();
+	if (const auto* o = dynamic_cast<const mrpt::obs::CObservationPointCloud*>(&obs))
+	{
+		if (o->pointcloud) pointsOf(*o->pointcloud, o->sensorPose, points);
+		return o->sensorPose;
+	}
+	if (const auto* o = dynamic_cast<const mrpt::obs::CObservationVelodyneScan*>(&obs))
+	{
+		if (o->point_cloud.size() > 0 || o->scan_packets.empty())
+			pointsOf(o->point_cloud, o->sensorPose, points);
+		else
+		{
+			// Raw packets only: decode them with the scan's calibration, on
+			// a copy (decoding writes the observation).
+			mrpt::obs::CObservationVelodyneScan decoded(*o);
+			decoded.generatePointCloud();
+			pointsOf(decoded.point_cloud, o->sensorPose, points);
+		}
+		return o->sensorPose;
+	}
+	if (const auto* o = dynamic_cast<const mrpt::obs::CObservation3DRangeScan*>(&obs))
+	{
+		if (o->hasRangeImage)
+		{
+			// Unprojecting loads an externally stored image: a copy.
+			mrpt::obs::CObservation3DRangeScan copy(*o);
+			mrpt::maps::CSimplePointsMap cloud;
+			mrpt::obs::T3DPointsProjectionParams projection;
+			projection.takeIntoAccountSensorPoseOnRobot = false;
+			copy.unprojectInto(cloud, projection);
+			pointsOf(cloud, o->sensorPose, points);
+		}
+		else if (o->hasPoints3D)
+			appendInRobotFrame(o->sensorPose, o->points3D_x.size(), [&](std::size_t i) {
+				return mrpt::math::TPoint3Df(o->points3D_x[i], o->points3D_y[i], o->points3D_z[i]);
+			}, points);
+		return o->sensorPose;
+	}
+	return std::nullopt;
+}
+
+bool CEvidentialGridMap2D::insertCloud(
+	const mrpt::obs::CObservation& obs, const mrpt::poses::CPose3D& robotPose)
+{
+	const TInsertionOptions& io = insertionOptions;
+	if (const auto bad = io.firstInvalidOfTheMap())
+		throw std::invalid_argument(bad->describe());
+	std::vector<mrpt::math::TPoint3Df>& points = m_workspace->cloudPoints;
+	const auto sensorPose = cloudInRobotFrame(obs, points);
+	if (!sensorPose) return false;
+	const mrpt::poses::CPose3D sensorInWorld = robotPose + *sensorPose;
+	requireFinitePose(sensorInWorld, "cloud");
+	// Heights are measured along the robot's z axis: a robot upside down
+	// has no ground under it.
+	if (!(robotPose.getRotationMatrix()(2, 2) > 0.0))
+	{
+		if (!m_tiltNoticeShown)
+			std::cerr << "[CEvidentialGridMap2D] note: clouds taken by a robot "
+						 "whose z axis points down are ignored (shown once)\n";
+		m_tiltNoticeShown = true;
+		return false;
+	}
+
+	TCloudRules rules;
+	rules.groundRemoval = io.groundRemoval;
+	rules.minObstacleHeight = io.minObstacleHeight;
+	rules.maxObstacleHeight = io.maxObstacleHeight;
+	rules.groundReturns = io.groundReturns;
+	rules.sectorWidth = io.sectorWidth > 0.0 ? io.sectorWidth : kDefaultCloudSectorWidth;
+	TCloudReturns& returns = m_workspace->cloudReturns;
+	sortCloudIntoSectors(points, sensorPose->translation(), robotPose, rules, returns);
+
+	CPolarSourceGrid& polar = m_workspace->sourceGrid;
+	polar.build(returns, io.sourceGridOptions(getResolution()));
+	// The returns' azimuths are the world's: the polar grid's sectors start
+	// at the world's -pi, around the sensor's place.
+	PlanarSensorPose sensor;
+	sensor.x = sensorInWorld.x();
+	sensor.y = sensorInWorld.y();
+	fusePolarGrid(sensor, obs.timestamp);
+	return true;
+}

@@ -1,0 +1,206 @@
+/* mrpt-evidential tests: 3-D clouds into the evidential grid: ground
+ * removal, what each kind of point proves, reinforcement across layers, and
+ * bad clouds. The worlds of tests/support/clouds.h give the answer per
+ * cell. */
+#include <gtest/gtest.h>
+#include <mrpt/obs/CObservationRotatingScan.h>
+#include <mrpt_evidential/CEvidentialGridMap2D.h>
+
+#include <cmath>
+#include <limits>
+
+#include "cloud/CloudSectors.h"
+#include "support/clouds.h"
+
+using namespace mrpt_evidential;
+using mrpt::math::TPoint3Df;
+using mrpt::poses::CPose3D;
+
+namespace
+{
+constexpr double kDeg = M_PI / 180;
+
+CEvidentialGridMap2D makeMap(GroundRemoval removal = GroundRemoval::Plane)
+{
+	CEvidentialGridMap2D map(-10.0, 10.0, -10.0, 10.0, 0.1);
+	map.insertionOptions.groundRemoval = removal;
+	return map;
+}
+
+/** A wall 6 m ahead across the robot's path. */
+test::TBox wallAhead() { return {6.0, 6.3, -3.0, 3.0, 0.0, 2.5}; }
+
+Decision at(const CEvidentialGridMap2D& map, double x, double y)
+{
+	return map.getCellDecision(x, y);
+}
+}  // namespace
+
+TEST(Clouds, GroundFreeObstacleOccupiedBehindUnknown)
+{
+	for (const auto removal : {GroundRemoval::Plane, GroundRemoval::Height})
+	{
+		SCOPED_TRACE(static_cast<int>(removal));
+		CEvidentialGridMap2D map = makeMap(removal);
+		ASSERT_TRUE(map.insertObservation(*test::lidarCloud({0.0, {wallAhead()}}), CPose3D()));
+		// Ground seen between the robot and the wall, and all around.
+		for (const double x : {3.0, 4.5, -4.0}) EXPECT_EQ(at(map, x, 0.05), Decision::Free) << x;
+		EXPECT_EQ(at(map, 0.05, 5.0), Decision::Free);
+		EXPECT_EQ(at(map, 6.05, 0.05), Decision::Occupied);
+		EXPECT_EQ(at(map, 6.05, 2.05), Decision::Occupied);
+		// Behind the wall, nothing was seen.
+		for (const double x : {7.5, 9.0}) EXPECT_EQ(at(map, x, 0.05), Decision::Unknown) << x;
+	}
+}
+
+TEST(Clouds, OverhangAndLowKerbAreNotObstacles)
+{
+	const test::TBox overhang{3.0, 3.5, -2.0, 2.0, 2.6, 3.0};
+	const test::TBox kerb{2.0, 2.2, -2.0, 2.0, 0.0, 0.1};
+	CEvidentialGridMap2D map = makeMap();
+	map.insertObservation(*test::lidarCloud({0.0, {overhang, kerb, wallAhead()}}), CPose3D());
+	EXPECT_EQ(at(map, 3.25, 0.05), Decision::Free);
+	EXPECT_EQ(at(map, 2.15, 0.05), Decision::Free);
+	EXPECT_EQ(at(map, 6.05, 0.05), Decision::Occupied);
+	// Lowered below maxObstacleHeight, the overhang is an obstacle.
+	CEvidentialGridMap2D low = makeMap();
+	low.insertionOptions.maxObstacleHeight = 3.5;
+	low.insertObservation(*test::lidarCloud({0.0, {overhang, kerb, wallAhead()}}), CPose3D());
+	EXPECT_EQ(at(low, 3.05, 0.05), Decision::Occupied);
+}
+
+TEST(Clouds, PlaneRemovesTheGroundOfASlope)
+{
+	const auto cloud = test::lidarCloud({5.0 * kDeg, {}});
+	CEvidentialGridMap2D plane = makeMap(GroundRemoval::Plane);
+	plane.insertObservation(*cloud, CPose3D());
+	EXPECT_EQ(plane.countDecisions().occupied, 0u);
+	EXPECT_GT(plane.countDecisions().free, 10000u);
+	// A fixed band takes the rising ground ahead for obstacles: the test
+	// can tell.
+	CEvidentialGridMap2D band = makeMap(GroundRemoval::Height);
+	band.insertObservation(*cloud, CPose3D());
+	EXPECT_GT(band.countDecisions().occupied, 100u);
+}
+
+TEST(Clouds, GroundReturnsProveFreeSpaceOrNothing)
+{
+	const auto cloud = test::lidarCloud({0.0, {wallAhead()}});
+	CEvidentialGridMap2D nothing = makeMap();
+	nothing.insertionOptions.groundReturns = GroundReturns::Nothing;
+	nothing.insertObservation(*cloud, CPose3D());
+	// Behind the robot there is only ground.
+	EXPECT_EQ(at(nothing, -4.0, 0.05), Decision::Unknown);
+	EXPECT_EQ(at(nothing, 6.05, 0.05), Decision::Occupied);
+	EXPECT_EQ(at(nothing, 3.0, 0.05), Decision::Free);  // the wall's beams crossed it
+	// Without ground removal every point is an obstacle: the ground too.
+	CEvidentialGridMap2D none = makeMap(GroundRemoval::None);
+	none.insertObservation(*cloud, CPose3D());
+	EXPECT_EQ(at(none, -6.75, 0.05), Decision::Occupied);
+}
+
+TEST(Clouds, LayersHittingOneCellReinforce)
+{
+	// k points of one azimuth and range at k heights: k layers on a pole.
+	for (const int k : {1, 3, 5})
+	{
+		std::vector<TPoint3Df> points;
+		for (int i = 0; i < k; ++i) points.emplace_back(3.02f, 0.0f, 0.3f + 0.2f * i);
+		TCloudRules rules;
+		rules.groundRemoval = GroundRemoval::Height;
+		rules.sectorWidth = 1.0 * kDeg;
+		TCloudReturns returns;
+		const TCloudCounts counts =
+			sortCloudIntoSectors(points, {0, 0, 0}, CPose3D(), rules, returns);
+		ASSERT_EQ(counts.obstacles, static_cast<std::size_t>(k));
+		for (const auto model : {SensorModel::ReinforcedMultiEcho, SensorModel::MultiEcho})
+		{
+			TSourceGridOptions options;
+			options.sensorModel.model = model;
+			options.binSize = 0.1;
+			CPolarSourceGrid polar;
+			polar.build(returns, options);
+			const std::size_t s = polar.sectorCount() / 2;  // azimuth 0
+			ASSERT_NEAR(polar.sectorAngle(s), 0.0, 1e-12);
+			const double expected = model == SensorModel::MultiEcho
+				? options.sensorModel.muO
+				: 1.0 - std::pow(1.0 - options.sensorModel.muO, k);
+			EXPECT_NEAR(polar.at(s, polar.binOfRange(3.02)).occupied, expected, 1e-12)
+				<< k;
+		}
+	}
+}
+
+TEST(Clouds, BadPointsAreDroppedAndCounted)
+{
+	const double nan = std::numeric_limits<double>::quiet_NaN();
+	const double inf = std::numeric_limits<double>::infinity();
+	const std::vector<TPoint3Df> points = {
+		{3.0f, 0.0f, 0.0f}, {static_cast<float>(nan), 0.0f, 0.0f},
+		{1.0f, static_cast<float>(inf), 0.0f}, {0.0f, 0.0f, 0.0f}, {0.001f, 0.0f, 0.0f}};
+	TCloudReturns returns;
+	const TCloudCounts counts = sortCloudIntoSectors(
+		points, {0, 0, 0}, CPose3D(), TCloudRules{GroundRemoval::None}, returns);
+	EXPECT_EQ(counts.used, 1u);
+	EXPECT_EQ(counts.dropped, 4u);
+	EXPECT_EQ(counts.obstacles, 1u);
+
+	// Through the map: the good point counts, the rest change nothing (one
+	// wide sector holds the point and the cell's centre).
+	CEvidentialGridMap2D map = makeMap(GroundRemoval::None);
+	map.insertionOptions.sectorWidth = 5 * kDeg;
+	ASSERT_TRUE(map.insertObservation(*test::cloudOf(points, CPose3D(0, 0, 1, 0, 0, 0)), CPose3D()));
+	EXPECT_EQ(at(map, 3.05, 0.05), Decision::Occupied);
+}
+
+TEST(Clouds, EmptyCloudsInsertNothing)
+{
+	CEvidentialGridMap2D map = makeMap();
+	EXPECT_TRUE(map.insertObservation(*test::cloudOf({}), CPose3D()));
+	auto noCloud = test::cloudOf({});
+	noCloud->pointcloud.reset();
+	EXPECT_TRUE(map.insertObservation(*noCloud, CPose3D()));
+	EXPECT_EQ(map.countDecisions().free + map.countDecisions().occupied, 0u);
+}
+
+TEST(Clouds, SensorUpsideDownSeesTheSameWorld)
+{
+	const auto upright = test::lidarCloud({0.0, {wallAhead()}});
+	// The same points seen by a sensor rolled half a turn: y and z flip in
+	// its frame, and its pose on the robot undoes that.
+	std::vector<TPoint3Df> flipped;
+	const auto& c = *upright->pointcloud;
+	for (std::size_t i = 0; i < c.size(); ++i)
+	{
+		float x, y, z;
+		c.getPoint(i, x, y, z);
+		flipped.emplace_back(x, -y, -z);
+	}
+	const auto rolled = test::cloudOf(flipped, CPose3D(0, 0, 1.8, 0, 0, M_PI));
+	CEvidentialGridMap2D a = makeMap(), b = makeMap();
+	a.insertObservation(*upright, CPose3D());
+	b.insertObservation(*rolled, CPose3D());
+	const auto da = a.countDecisions(), db = b.countDecisions();
+	EXPECT_EQ(da.free, db.free);
+	EXPECT_EQ(da.occupied, db.occupied);
+	EXPECT_EQ(at(b, 6.05, 0.05), Decision::Occupied);
+
+	// A robot upside down has no ground under it: refused.
+	CEvidentialGridMap2D refused = makeMap();
+	EXPECT_FALSE(refused.insertObservation(*upright, CPose3D(0, 0, 0, 0, 0, M_PI)));
+}
+
+TEST(Clouds, MillionsOfPointsAndUnreadTypes)
+{
+	// Two million points on one wall: linear work, a correct map.
+	std::vector<TPoint3Df> points;
+	points.reserve(2'000'000);
+	for (int i = 0; i < 2'000'000; ++i)
+		points.emplace_back(5.0f, -2.0f + 4.0f * static_cast<float>(i) / 2e6f, 0.5f);
+	CEvidentialGridMap2D map = makeMap(GroundRemoval::Height);
+	ASSERT_TRUE(map.insertObservation(*test::cloudOf(points, CPose3D(0, 0, 0.5, 0, 0, 0)), CPose3D()));
+	EXPECT_EQ(at(map, 5.05, 0.05), Decision::Occupied);
+	EXPECT_EQ(at(map, 2.5, 0.05), Decision::Free);
+	// A rotating scan has no elevations in MRPT 2.5.8: not for this map.
+	EXPECT_FALSE(map.insertObservation(mrpt::obs::CObservationRotatingScan(), CPose3D()));
+}
