@@ -20,6 +20,7 @@
 #include "insert/PolarToCartesian.h"
 
 #include "../tests/support/scans.h"
+#include "CloudCases.h"
 
 #include <cmath>
 #include <cstdio>
@@ -310,10 +311,12 @@ std::string name(FusionRule r)
 	return mrpt::typemeta::TEnumType<FusionRule>::value2name(r);
 }
 
-template <typename Fn>
-void add(const std::string& caseName, Fn fn, bool insertion)
+}  // namespace
+
+void bench::addCase(
+	const std::string& caseName, std::function<void(benchmark::State&)> fn, bool insertion)
 {
-	auto* b = benchmark::RegisterBenchmark(caseName.c_str(), fn);
+	auto* b = benchmark::RegisterBenchmark(caseName.c_str(), std::move(fn));
 	b->Unit(benchmark::kMicrosecond);
 	if (smoke)
 		b->Iterations(3);
@@ -321,6 +324,14 @@ void add(const std::string& caseName, Fn fn, bool insertion)
 		b->Iterations(kInsertions);
 	else
 		b->MinTime(0.5);
+}
+
+namespace
+{
+template <typename Fn>
+void add(const std::string& caseName, Fn fn, bool insertion)
+{
+	bench::addCase(caseName, fn, insertion);
 }
 
 void registerCases()
@@ -364,6 +375,7 @@ void registerCases()
 		[](benchmark::State& s) { ourInsertMapSize(s, 20.0); }, true);
 	add("ours/mapsize/400m/stock/0.05m",
 		[](benchmark::State& s) { ourInsertMapSize(s, 200.0); }, true);
+	bench::registerCloudCases();
 }
 
 /** A run's name without the suffixes Google Benchmark adds. */
@@ -414,6 +426,7 @@ void printReport(const RecordingReporter& rep)
 	}
 	printRatio(rep, "insert into 400 x 400 m vs 40 x 40 m map",
 			   "ours/mapsize/400m/stock/0.05m", "ours/mapsize/40m/stock/0.05m", 1.1);
+	bench::printCloudRatios(rep.microseconds);
 
 	std::printf(
 		"\nMemory per cell: ours %zu bytes (masses and time stamp), plus 1 byte "
