@@ -460,10 +460,10 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	 *  if a coordinate is not finite. */
 	static void requireFinitePose(const mrpt::poses::CPose3D& sensorPose, const char* what);
 	/** Fuses the scan's cells into a map that keeps conflict. */
-	void fuseKeepingConflict(const CScanImpacts& impacts);
+	void fuseKeepingConflict(CScanImpacts& impacts);
 	/** Fuses the scan's cells into a map without conflict, and settles its
 	 * motion events. */
-	void fuseWithMotion(const CScanImpacts& impacts);
+	void fuseWithMotion(CScanImpacts& impacts);
 	/** What the motion layer says of cell idx. */
 	Motion motionOf(std::size_t idx) const;
 	/** Drops the likelihood field; the next likelihood rebuilds it. */

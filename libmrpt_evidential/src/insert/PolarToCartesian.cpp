@@ -124,7 +124,7 @@ void CPolarToCartesian::setup(
 	m_polygon.clear();
 	m_uniformPolygon.clear();
 	const std::size_t n = polar.sectorCount();
-	if (n == 0 || polar.maxInformedBins() == 0) return;
+	if (n == 0 || polar.maxTransformBins() == 0) return;
 
 	const double bin = polar.binSize(), spacing = polar.sectorSpacing();
 	m_invSpacing = 1.0 / spacing;
@@ -161,9 +161,9 @@ void CPolarToCartesian::setup(
 	m_sectorSpans.resize(n);
 	for (std::size_t s = 0; s < n; ++s)
 	{
-		const double reach = polar.informedBins(s) == 0
+		const double reach = polar.transformBins(s) == 0
 			? 0.0
-			: (static_cast<double>(polar.informedBins(s)) + 0.5) * bin;
+			: (static_cast<double>(polar.transformBins(s)) + 0.5) * bin;
 		const double freeEnd = (static_cast<double>(polar.freeBins(s)) - 0.5) * bin;
 		const std::vector<double>& impacts = polar.impacts(s);
 		const double nearest = impacts.empty() ? HUGE_VAL : impacts.front();
@@ -181,6 +181,15 @@ void CPolarToCartesian::setup(
 		[&](std::size_t lo, std::size_t hi) {
 			return std::sqrt(std::max(m_sectorSpans[lo].reach2, m_sectorSpans[hi].reach2));
 		});
+	// A cloud's farther impacts lie beyond the polygon; the grid must grow
+	// to hold them all the same.
+	for (std::size_t s = 0; s < n; ++s)
+		if (polar.informedBins(s) > polar.transformBins(s))
+		{
+			const double r = (static_cast<double>(polar.informedBins(s)) + 0.5) * bin;
+			const auto [c, sn] = sectorDirection(s);
+			m_box.add(sensor.x + r * c, sensor.y + r * sn);
+		}
 
 	// The uniform region: the free mass most sectors start with, where both
 	// sectors around a gap hold it in the two bins around every centre.

@@ -29,7 +29,7 @@ void CScanImpacts::build(
 			const double fy = std::floor((y - grid.yMin) / grid.resolution);
 			if (!(fx >= 0 && fy >= 0 && fx < grid.sizeX && fy < grid.sizeY)) continue;
 			m_cells.push_back(
-				{grid.index(static_cast<int>(fx), static_cast<int>(fy)), occupied});
+				{grid.index(static_cast<int>(fx), static_cast<int>(fy)), occupied, false});
 		}
 	}
 	std::sort(m_cells.begin(), m_cells.end(), [](const auto& a, const auto& b) {

@@ -31,6 +31,8 @@ class CScanImpacts
 	{
 		std::size_t index;
 		double occupied;
+		/** The transform's visit reached the cell (CCursor found it). */
+		bool visited = false;
 	};
 
 	/** Lists the impact cells of `polar` as `transform` (set up for it)
@@ -43,11 +45,12 @@ class CScanImpacts
 	const std::vector<TImpactCell>& cells() const { return m_cells; }
 
 	/** Walks the list along increasing cell indices, as the transform visits
-	 * cells: each call's index must be >= the previous one's. */
+	 * cells: each call's index must be >= the previous one's. The cells it
+	 * finds are marked visited. */
 	class CCursor
 	{
 	   public:
-		explicit CCursor(const std::vector<TImpactCell>& cells)
+		explicit CCursor(std::vector<TImpactCell>& cells)
 			: m_it(cells.begin()), m_end(cells.end())
 		{
 		}
@@ -55,7 +58,9 @@ class CScanImpacts
 		double occupiedAt(std::size_t idx)
 		{
 			while (m_it != m_end && m_it->index < idx) ++m_it;
-			return m_it != m_end && m_it->index == idx ? m_it->occupied : 0.0;
+			if (m_it == m_end || m_it->index != idx) return 0.0;
+			m_it->visited = true;
+			return m_it->occupied;
 		}
 		/** The index of the first impact cell at or after idx, or SIZE_MAX. */
 		std::size_t nextFrom(std::size_t idx)
@@ -83,9 +88,23 @@ class CScanImpacts
 		}
 
 	   private:
-		std::vector<TImpactCell>::const_iterator m_it, m_end;
+		std::vector<TImpactCell>::iterator m_it, m_end;
 	};
-	CCursor cursor() const { return CCursor(m_cells); }
+	/** A cursor from the start; the visited marks of an earlier walk are
+	 * cleared. */
+	CCursor cursor()
+	{
+		for (TImpactCell& c : m_cells) c.visited = false;
+		return CCursor(m_cells);
+	}
+	/** fn(index, occupied) for each impact cell the walk did not visit: a
+	 * cloud's farther impacts, beyond the transform's reach. */
+	template <typename Fn>
+	void forEachUnvisited(Fn&& fn) const
+	{
+		for (const TImpactCell& c : m_cells)
+			if (!c.visited) fn(c.index, c.occupied);
+	}
 
    private:
 	std::vector<TImpactCell> m_cells;

@@ -103,7 +103,7 @@ void CEvidentialGridMap2D::fusePolarGrid(
 		fuseWithMotion(impacts);
 }
 
-void CEvidentialGridMap2D::fuseKeepingConflict(const CScanImpacts& impacts)
+void CEvidentialGridMap2D::fuseKeepingConflict(CScanImpacts& impacts)
 {
 	CPolarToCartesian& transform = m_workspace->transform;
 	const FusionRule rule = insertionOptions.fusionRule;
@@ -138,12 +138,22 @@ void CEvidentialGridMap2D::fuseKeepingConflict(const CScanImpacts& impacts)
 				}, single);
 			});
 	};
+	// The impact cells the visit did not reach: a cloud's farther impacts.
+	const auto fuseUnvisited = [&](auto&& single) {
+		impacts.forEachUnvisited([&](std::size_t idx, double occupied) {
+			m_grid.markImpact(idx);
+			single(idx, withImpact(Mass::vacuous(), occupied));
+		});
+	};
 	if (rule == FusionRule::Conjunctive && handling == ConflictHandling::Keep)
 	{
 		if (m_grid.decayRate() > 0.0)
 			conjunctive(std::true_type());
 		else
 			conjunctive(std::false_type());
+		fuseUnvisited([&](std::size_t idx, const Mass& observed) {
+			m_grid.fuseConjunctive(idx, observed);
+		});
 		return;
 	}
 	const auto single = [&](std::size_t idx, const Mass& observed) {
@@ -157,4 +167,5 @@ void CEvidentialGridMap2D::fuseKeepingConflict(const CScanImpacts& impacts)
 				for (std::size_t idx = from; idx < from + n; ++idx) single(idx, uniform);
 			}, single);
 		});
+	fuseUnvisited(single);
 }

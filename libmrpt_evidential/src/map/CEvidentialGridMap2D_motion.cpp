@@ -17,7 +17,7 @@
 
 using namespace mrpt_evidential;
 
-void CEvidentialGridMap2D::fuseWithMotion(const CScanImpacts& impacts)
+void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 {
 	const TInsertionOptions& io = insertionOptions;
 	CPolarToCartesian& transform = m_workspace->transform;
@@ -90,6 +90,10 @@ void CEvidentialGridMap2D::fuseWithMotion(const CScanImpacts& impacts)
 		fuseAll(std::true_type());
 	else
 		fuseAll(std::false_type());
+	impacts.forEachUnvisited([&](std::size_t idx, double occupied) {
+		m_grid.markImpact(idx);
+		single(idx, withImpact(Mass::vacuous(), occupied), true);
+	});
 	motion.settle(m_grid);
 }
 

@@ -111,7 +111,7 @@ void CPolarSourceGrid::build(
 		m_observed[sector] = 1;
 	}
 
-	buildRows(options);
+	buildRows(options, false);
 }
 
 void CPolarSourceGrid::build(const TCloudReturns& returns, const TSourceGridOptions& options)
@@ -143,7 +143,7 @@ void CPolarSourceGrid::build(const TCloudReturns& returns, const TSourceGridOpti
 		m_freeReach[s] = reach;
 		m_observed[s] = !m_impacts[s].empty() || reach > 0.0;
 	}
-	buildRows(options);
+	buildRows(options, true);
 }
 
 void CPolarSourceGrid::startSectors(const TSourceGridOptions& options)
@@ -158,12 +158,13 @@ void CPolarSourceGrid::startSectors(const TSourceGridOptions& options)
 	m_observed.assign(m_sectorCount, 0);
 }
 
-void CPolarSourceGrid::buildRows(const TSourceGridOptions& options)
+void CPolarSourceGrid::buildRows(const TSourceGridOptions& options, bool nearestRunOnly)
 {
 	m_layouts.resize(m_sectorCount);
+	m_transformBins.resize(m_sectorCount);
 	m_runs.clear();
 	m_masses.clear();
-	m_maxInformedBins = 0;
+	m_maxInformedBins = m_maxTransformBins = 0;
 	for (std::size_t s = 0; s < m_sectorCount; ++s)
 	{
 		std::vector<double>& impacts = m_impacts[s];
@@ -180,6 +181,10 @@ void CPolarSourceGrid::buildRows(const TSourceGridOptions& options)
 			layout.informedBins = layout.freeBins;
 		}
 		m_maxInformedBins = std::max(m_maxInformedBins, layout.informedBins);
+		m_transformBins[s] = nearestRunOnly && layout.runCount > 0
+			? m_runs[layout.firstRun].end
+			: layout.informedBins;
+		m_maxTransformBins = std::max(m_maxTransformBins, m_transformBins[s]);
 	}
 }
 

@@ -146,6 +146,15 @@ class CPolarSourceGrid
 	double freeMargin() const { return m_freeMargin; }
 	/** The largest informedBins() of all sectors. */
 	std::size_t maxInformedBins() const { return m_maxInformedBins; }
+	/** Number of leading bins of sector s that the transform spreads over
+	 * the cells: informedBins() for a scan. For a cloud, only up to the end
+	 * of the run of bins around its nearest impacts: its farther impacts (a
+	 * tree seen over a car, by many layers) reach the cells as the cells
+	 * their points end in (CScanImpacts), not spread over the whole width of
+	 * the sector, whose bins between them are vacuous. */
+	std::size_t transformBins(std::size_t s) const { return m_transformBins.at(s); }
+	/** The largest transformBins() of all sectors. */
+	std::size_t maxTransformBins() const { return m_maxTransformBins; }
 
 	/** The mass of one bin.
 	 * \throws std::out_of_range if a coordinate is out of range. */
@@ -169,8 +178,10 @@ class CPolarSourceGrid
 	/** Sets the bins, margin and per-sector storage for m_sectorCount
 	 * sectors. */
 	void startSectors(const TSourceGridOptions& options);
-	/** Writes every sector's row from m_impacts and m_freeReach. */
-	void buildRows(const TSourceGridOptions& options);
+	/** Writes every sector's row from m_impacts and m_freeReach;
+	 * `nearestRunOnly`: the transform covers each row up to the end of its
+	 * first run (clouds). */
+	void buildRows(const TSourceGridOptions& options, bool nearestRunOnly);
 
 	std::size_t m_sectorCount = 0, m_binCount = 0;
 	double m_binSize = 0.0, m_firstAngle = 0.0, m_spacing = 0.0, m_freeMargin = 0.0;
@@ -179,7 +190,8 @@ class CPolarSourceGrid
 	std::vector<TBinRun> m_runs;
 	std::vector<Mass> m_masses;  //!< the runs' masses
 	std::vector<char> m_observed;
-	std::size_t m_maxInformedBins = 0;
+	std::size_t m_maxInformedBins = 0, m_maxTransformBins = 0;
+	std::vector<std::size_t> m_transformBins;  //!< per sector
 	std::vector<std::vector<double>> m_impacts;  //!< per sector, reused
 	std::vector<double> m_freeReach;  //!< per sector, 0 for scans
 };
