@@ -33,11 +33,12 @@ function(mrpt_evidential_add_test name)
   add_test(NAME ${name} COMMAND ${launcher} ${arg_COMMAND})
 endfunction()
 
-# mrpt_evidential_add_suite(NAME SOURCES a.cpp... LIBRARIES lib...)
+# mrpt_evidential_add_suite(NAME SOURCES a.cpp... LIBRARIES lib... [TEST_PREFIX p])
 # One GoogleTest executable, its tests discovered into CTest with label
-# "unit" and run under the memory budget.
+# "unit" (their names prefixed with p, if given) and run under the memory
+# budget.
 function(mrpt_evidential_add_suite name)
-  cmake_parse_arguments(arg "" "" "SOURCES;LIBRARIES" ${ARGN})
+  cmake_parse_arguments(arg "" "TEST_PREFIX" "SOURCES;LIBRARIES" ${ARGN})
   add_executable(${name} ${arg_SOURCES})
   target_link_libraries(${name} PRIVATE ${arg_LIBRARIES} GTest::gtest_main)
   target_compile_definitions(${name} PRIVATE
@@ -53,5 +54,6 @@ function(mrpt_evidential_add_suite name)
     set_target_properties(${name} PROPERTIES CROSSCOMPILING_EMULATOR "${launcher}")
   endif()
   add_dependencies(${name} memory_budget)
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS unit)
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 TEST_PREFIX "${arg_TEST_PREFIX}"
+    PROPERTIES LABELS unit)
 endfunction()

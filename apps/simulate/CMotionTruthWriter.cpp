@@ -3,44 +3,13 @@
 #include "CMotionTruthWriter.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
+#include "CellRuns.h"
+
 namespace mrpt_evidential::simulate
 {
-namespace
-{
-/** " first-last" for a run of consecutive indices, " first" for one. */
-void appendRun(std::string& out, int first, int last, const char* suffix)
-{
-	char item[48];
-	if (first == last)
-		std::snprintf(item, sizeof(item), " %d%s", first, suffix);
-	else
-		std::snprintf(item, sizeof(item), " %d-%d%s", first, last, suffix);
-	out += item;
-}
-
-/** "<count> runs" of the indices of the set flags. */
-std::string runsOf(const std::vector<uint8_t>& flags)
-{
-	std::string runs;
-	std::size_t count = 0;
-	for (int i = 0, n = static_cast<int>(flags.size()); i < n; ++i)
-	{
-		if (!flags[i]) continue;
-		int last = i;
-		while (last + 1 < n && flags[last + 1])
-			++last;
-		appendRun(runs, i, last, "");
-		count += static_cast<std::size_t>(last - i + 1);
-		i = last;
-	}
-	return std::to_string(count) + runs;
-}
-}  // namespace
-
 CMotionTruthWriter::CMotionTruthWriter(
 	const std::string& path, CScene& scene, const std::string& sceneName,
 	double startTime, double scanPeriod, std::size_t scans)
@@ -48,11 +17,7 @@ CMotionTruthWriter::CMotionTruthWriter(
 	  m_scene(scene),
 	  m_samplePeriod(scanPeriod / kSamplesPerScan)
 {
-	const TRect e = scene.extent();
-	m_grid = {
-		e.xMin, e.yMin, kResolution,
-		static_cast<int>(std::lround((e.xMax - e.xMin) / kResolution)),
-		static_cast<int>(std::lround((e.yMax - e.yMin) / kResolution))};
+	m_grid = gridOver(scene.extent(), kResolution);
 	const std::size_t cells = static_cast<std::size_t>(m_grid.sizeX) *
 		static_cast<std::size_t>(m_grid.sizeY);
 	m_static.assign(cells, 0);
@@ -70,7 +35,7 @@ CMotionTruthWriter::CMotionTruthWriter(
 		"grid %.2f %.2f %.2f %d %d\nscans %zu\nsample %.2f\n",
 		sceneName.c_str(), startTime, m_grid.xMin, m_grid.yMin,
 		m_grid.resolution, m_grid.sizeX, m_grid.sizeY, scans, m_samplePeriod);
-	write(header + std::string("static ") + runsOf(m_static) + "\n");
+	write(header + std::string("static ") + cellRuns(m_static) + "\n");
 }
 
 void CMotionTruthWriter::cover(
@@ -109,7 +74,7 @@ void CMotionTruthWriter::writeScan(std::size_t k)
 	std::snprintf(
 		line, sizeof(line), "scan %zu %.2f\n", k,
 		static_cast<double>(last) * m_samplePeriod);
-	std::string record = line + ("occupied " + runsOf(m_covered)) + "\n";
+	std::string record = line + ("occupied " + cellRuns(m_covered)) + "\n";
 
 	// A cell covered again since it was left is not left. Runs of
 	// consecutive cells left at the same time share one item.
@@ -127,7 +92,7 @@ void CMotionTruthWriter::writeScan(std::size_t k)
 			   m_leftAt[m_left[end + 1]] == m_leftAt[first])
 			++end;
 		std::snprintf(line, sizeof(line), ":%.2f", m_leftAt[first]);
-		appendRun(runs, first, m_left[end], line);
+		appendCellRun(runs, first, m_left[end], line);
 		count += end - j + 1;
 		j = end;
 	}

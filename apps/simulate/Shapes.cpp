@@ -76,6 +76,14 @@ TRect rectOnPath(const TPath& path, double t, double sizeX, double sizeY)
 	return {x - 0.5 * sizeX, y - 0.5 * sizeY, x + 0.5 * sizeX, y + 0.5 * sizeY};
 }
 
+TGridGeometry gridOver(const TRect& area, double resolution)
+{
+	return {
+		area.xMin, area.yMin, resolution,
+		static_cast<int>(std::lround((area.xMax - area.xMin) / resolution)),
+		static_cast<int>(std::lround((area.yMax - area.yMin) / resolution))};
+}
+
 void forEachCell(
 	const TShape& shape, const TGridGeometry& grid, ECoverage coverage,
 	const std::function<void(int, int)>& visit)

@@ -44,6 +44,10 @@ struct TGridGeometry
 	int sizeX, sizeY;
 };
 
+/** The grid of cells of `resolution` covering an area from its lower
+ * corner, rounded to whole cells. */
+TGridGeometry gridOver(const TRect& area, double resolution);
+
 enum class ECoverage
 {
 	/** Cells whose centres lie inside the shape: how the simulated world is

@@ -1,46 +1,43 @@
 /* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
  * evgrid-simulate: writes a small synthetic rawlog of a changing room, scanned
- * by MRPT's laser simulator along a known path, with its ground truth. */
-#include <mrpt/io/CFileGZOutputStream.h>
-#include <mrpt/obs/CActionCollection.h>
-#include <mrpt/obs/CActionRobotMovement2D.h>
+ * by MRPT's laser simulator along a known path, or of a street, scanned by a
+ * multi-layer lidar, with its ground truth. */
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/random/RandomGenerators.h>
-#include <mrpt/serialization/CArchive.h>
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
-#include <fstream>
 #include <memory>
-#include <stdexcept>
 #include <string>
-#include <utility>
 
-#include "CMotionTruthWriter.h"
 #include "CRoomScene.h"
+#include "CSceneFiles.h"
 #include "CSlamError.h"
+#include "Odometry.h"
 #include "SceneCatalog.h"
+#include "SimulationClock.h"
+#include "StreetRun.h"
 
 namespace sim = mrpt_evidential::simulate;
 
 namespace
 {
-// The scanner: a 180-degree planar lidar, 1 degree between rays, at 10 Hz,
-// mounted 0.2 m ahead of the robot's centre.
-constexpr double kRate = 10.0;
+using sim::kRate;
+using sim::kStartTime;
+
+// The room's scanner: a 180-degree planar lidar, 1 degree between rays, at
+// kRate, mounted 0.2 m ahead of the robot's centre.
 constexpr std::size_t kRays = 181;
 constexpr float kMaxRange = 20.0f;
 constexpr float kRangeNoise = 0.01f;
-// First timestamp, Unix seconds. Its fractional part keeps every time in the
-// ground truth off whole seconds, which is how MRPT's pf-localization tells
-// a column of times from a column of rawlog indices.
-constexpr double kStartTime = 1700000000.05;
-// Odometry errors: a random error per increment, and a 2 % over-estimate of
-// rotations (a wheel base slightly off) that makes the path drift.
-constexpr double kOdoScaleStd = 0.02, kOdoLateralStd = 0.002;
-constexpr double kOdoRotationBias = 1.02, kOdoRotationStd = 0.2 * M_PI / 180;
+// The scene that is no room, and the bounds of its options.
+constexpr const char* kStreet = "street";
+constexpr unsigned int kMaxLayers = 128;
+constexpr double kMinAzimuthStep = 0.01, kMaxAzimuthStep = 90;
+constexpr double kMinDuration = 0.1;
 
 struct TOptions
 {
@@ -48,12 +45,18 @@ struct TOptions
 	std::string scene = "room_door_box";
 	unsigned int seed = 1;
 	unsigned int laps = 2;
+	/** The street's own options (its prefix and seed are the above). */
+	sim::TStreetRunOptions street;
+	/** Which options were given, to refuse those of another scene. */
+	bool lapsGiven = false, streetOptionGiven = false;
 };
 
 void printHelp(const char* program)
 {
 	std::printf(
 		"Usage: %s [--scene NAME] [--seed N] [--laps N] OUTPUT_PREFIX\n"
+		"       %s --scene street [--seed N] [--duration S] [--layers N]\n"
+		"           [--azimuth-step DEG] OUTPUT_PREFIX\n"
 		"\n"
 		"Simulates a robot driving loops in a room that changes, scanned by\n"
 		"MRPT's laser simulator, and writes:\n"
@@ -72,7 +75,7 @@ void printHelp(const char* program)
 		"degrees at %g Hz, range noise %g m, range %g m. Odometry has random\n"
 		"errors and over-estimates rotations by 2 %%. Scenes (times from the\n"
 		"first scan):\n",
-		program, 100 * sim::CSlamError::kMaxShift,
+		program, program, 100 * sim::CSlamError::kMaxShift,
 		sim::CSlamError::kMaxTurn * 180 / M_PI, sim::CRoomScene::kLapPeriod,
 		kRays, kRate, static_cast<double>(kRangeNoise),
 		static_cast<double>(kMaxRange));
@@ -85,6 +88,29 @@ void printHelp(const char* program)
 			summary.replace(i, 1, "\n    ");
 		std::printf("  %s\n    %s\n", scene.name, summary.c_str());
 	}
+	std::printf(
+		"  street (another world, sensor and files)\n"
+		"    a vehicle drives east down a 90 m street at %g m/s for\n"
+		"    --duration (at most %g s): flat, then a %g-degree hill from\n"
+		"    x = %g to %g m; houses, parked cars, lamp posts, %g m kerbs, a\n"
+		"    gantry %g m over the road, a tree; a person crosses, another\n"
+		"    walks, a car comes the other way. The lidar: --layers over -15\n"
+		"    to +15 degrees, a firing every --azimuth-step degrees, 0.5 to\n"
+		"    100 m, range noise 0.02 m, %g m above the vehicle, at %g Hz;\n"
+		"    the vehicle pitches and rolls with the ground. Besides .gt.txt,\n"
+		"    .slam.txt and .motion.gz, it writes:\n"
+		"      OUTPUT_PREFIX.rawlog        one odometry increment and one\n"
+		"                                  CObservationPointCloud VELODYNE\n"
+		"                                  (points in the sensor's frame) a\n"
+		"                                  step\n"
+		"      OUTPUT_PREFIX.gt3d.txt      the vehicle's true 3-D pose, as\n"
+		"                                  time x y z yaw pitch roll\n"
+		"      OUTPUT_PREFIX.footprint.gz  the static footprint truth\n",
+		sim::CStreetScene::kSpeed, sim::CStreetScene::kMaxDuration,
+		sim::CStreetScene::kRampDegrees, sim::CStreetScene::kRampStartX,
+		sim::CStreetScene::kRampEndX, sim::CStreetScene::kKerbHeight,
+		sim::CStreetScene::kGantryBottom, sim::CStreetScene::kSensorHeight,
+		kRate);
 	std::printf(
 		"\n"
 		"OUTPUT_PREFIX.motion.gz is gzip-compressed text: a header\n"
@@ -107,12 +133,32 @@ void printHelp(const char* program)
 		"listed as moving; all cells are listed, seen by the scanner or not.\n"
 		"A cell stays left (at its latest TL) until listed occupied again.\n"
 		"\n"
+		"OUTPUT_PREFIX.footprint.gz (street) is gzip-compressed text:\n"
+		"  evgrid-simulate footprint 1\n"
+		"  scene NAME\n"
+		"  grid X0 Y0 RES NX NY  the grid of motion.gz\n"
+		"  heights LOW HIGH      m above the ground at the cell's centre\n"
+		"  obstacle C ITEMS      cells where something stands between LOW\n"
+		"                        and HIGH\n"
+		"  low C ITEMS           cells with something only below LOW (kerbs)\n"
+		"  overhang C ITEMS      cells with something only above HIGH\n"
+		"Other cells are ground. Moving things are all obstacles: scan k's\n"
+		"are its occupied line in motion.gz.\n"
+		"\n"
 		"Options:\n"
 		"  --scene NAME  the scene (default room_door_box)\n"
 		"  --seed N      seed of the noise (default 1): equal seeds, equal\n"
 		"                files\n"
-		"  --laps N      number of loops, >= 1 (default 2)\n"
-		"  --help        this text\n");
+		"  --laps N      number of loops, >= 1 (default 2); not for street\n"
+		"  --duration S  street: seconds of driving, %g to %g (default %g)\n"
+		"  --layers N    street: lidar layers, 1 to %u (default 16)\n"
+		"  --azimuth-step DEG\n"
+		"                street: degrees between firings, %g to %g (default\n"
+		"                0.2), rounded to a whole number a turn\n"
+		"  --help        this text\n",
+		kMinDuration, sim::CStreetScene::kMaxDuration,
+		sim::CStreetScene::kDefaultDuration, kMaxLayers, kMinAzimuthStep,
+		kMaxAzimuthStep);
 }
 
 /** A whole decimal number in [min, 2^32), or false. */
@@ -129,12 +175,25 @@ bool parseUnsigned(
 	return true;
 }
 
+/** A decimal number in [min, max], or false. */
+bool parseNumber(const std::string& text, double min, double max, double& out)
+{
+	char* end = nullptr;
+	const double value = std::strtod(text.c_str(), &end);
+	if (text.empty() || *end != '\0' || !(value >= min && value <= max))
+		return false;
+	out = value;
+	return true;
+}
+
 /** Parses the command line; returns the exit code to stop with, or -1. */
 int parseCommandLine(int argc, char** argv, TOptions& opts)
 {
+	sim::TStreetRunOptions& street = opts.street;
 	for (int i = 1; i < argc; ++i)
 	{
 		const std::string arg = argv[i];
+		const char* value = i + 1 < argc ? argv[i + 1] : "";
 		if (arg == "--help" || arg == "-h")
 		{
 			printHelp(argv[0]);
@@ -142,30 +201,60 @@ int parseCommandLine(int argc, char** argv, TOptions& opts)
 		}
 		if (arg == "--scene")
 		{
-			if (i + 1 >= argc || !sim::findScene(argv[i + 1]))
+			if (value != std::string(kStreet) && !sim::findScene(value))
 			{
 				std::string names;
 				for (const sim::TSceneEntry& scene : sim::sceneCatalog())
 					names += std::string(" ") + scene.name;
 				std::fprintf(
-					stderr, "%s: --scene needs one of:%s\n", argv[0],
-					names.c_str());
+					stderr, "%s: --scene needs one of:%s %s\n", argv[0],
+					names.c_str(), kStreet);
 				return 2;
 			}
-			opts.scene = argv[++i];
+			opts.scene = value;
+			++i;
 		}
-		else if (arg == "--seed" || arg == "--laps")
+		else if (arg == "--seed" || arg == "--laps" || arg == "--layers")
 		{
-			const bool seed = arg == "--seed";
-			if (i + 1 >= argc ||
-				!parseUnsigned(
-					argv[i + 1], seed ? 0 : 1, seed ? opts.seed : opts.laps))
+			const bool seed = arg == "--seed", laps = arg == "--laps";
+			unsigned int n = 0;
+			if (!parseUnsigned(value, seed ? 0 : 1, n) ||
+				(!seed && !laps && n > kMaxLayers))
 			{
+				const std::string bound = seed ? ""
+					: laps ? " >= 1"
+						   : " from 1 to " + std::to_string(kMaxLayers);
 				std::fprintf(
 					stderr, "%s: %s needs a whole number%s\n", argv[0],
-					arg.c_str(), seed ? "" : " >= 1");
+					arg.c_str(), bound.c_str());
 				return 2;
 			}
+			if (seed)
+				opts.seed = n;
+			else if (laps)
+				opts.laps = n;
+			else
+				street.layers = n;
+			opts.lapsGiven |= laps;
+			opts.streetOptionGiven |= !seed && !laps;
+			++i;
+		}
+		else if (arg == "--duration" || arg == "--azimuth-step")
+		{
+			const bool duration = arg == "--duration";
+			const double min = duration ? kMinDuration : kMinAzimuthStep,
+						 max = duration ? sim::CStreetScene::kMaxDuration
+										: kMaxAzimuthStep;
+			if (!parseNumber(
+					value, min, max,
+					duration ? street.duration : street.azimuthStepDegrees))
+			{
+				std::fprintf(
+					stderr, "%s: %s needs a number from %g to %g\n", argv[0],
+					arg.c_str(), min, max);
+				return 2;
+			}
+			opts.streetOptionGiven = true;
 			++i;
 		}
 		else if (!arg.empty() && arg[0] == '-')
@@ -190,72 +279,31 @@ int parseCommandLine(int argc, char** argv, TOptions& opts)
 			stderr, "%s: OUTPUT_PREFIX missing (see --help)\n", argv[0]);
 		return 2;
 	}
+	const bool isStreet = opts.scene == kStreet;
+	if (isStreet ? opts.lapsGiven : opts.streetOptionGiven)
+	{
+		std::fprintf(
+			stderr, "%s: %s (see --help)\n", argv[0],
+			isStreet ? "--laps is not for the street: give --duration"
+					 : "--duration, --layers and --azimuth-step are for "
+					   "--scene street only");
+		return 2;
+	}
 	return -1;
 }
 
-/** What the robot's odometry reports for a true increment. */
-mrpt::poses::CPose2D noisyOdometry(
-	const mrpt::poses::CPose2D& truth, mrpt::random::CRandomGenerator& rng)
-{
-	return {
-		truth.x() * (1.0 + kOdoScaleStd * rng.drawGaussian1D_normalized()),
-		truth.y() + kOdoLateralStd * rng.drawGaussian1D_normalized(),
-		truth.phi() * kOdoRotationBias +
-			kOdoRotationStd * rng.drawGaussian1D_normalized()};
-}
-
-/** A pose file of lines "time x y phi", as evgrid build -p reads. */
-class CPoseWriter
-{
-   public:
-	explicit CPoseWriter(std::string path)
-		: m_path(std::move(path)), m_file(m_path)
-	{
-		if (!m_file) throw std::runtime_error("cannot write " + m_path);
-		m_file << "% time x y phi\n";
-	}
-	void write(double time, const mrpt::poses::CPose2D& pose)
-	{
-		char line[128];
-		std::snprintf(
-			line, sizeof(line), "%.3f %.6f %.6f %.6f\n", time, pose.x(),
-			pose.y(), pose.phi());
-		m_file << line;
-	}
-	void close()
-	{
-		m_file.close();
-		if (!m_file) throw std::runtime_error("cannot write " + m_path);
-	}
-
-   private:
-	std::string m_path;
-	std::ofstream m_file;
-};
-
-void simulate(const TOptions& opts)
+void simulateRoom(const TOptions& opts)
 {
 	// The laser simulator draws its noise from MRPT's global generator: seed
 	// it, and draw the odometry noise from it too, so one seed fixes all.
 	auto& rng = mrpt::random::getRandomGenerator();
 	rng.randomize(opts.seed);
 
-	const std::string rawlogFile = opts.prefix + ".rawlog";
-	mrpt::io::CFileGZOutputStream rawlogStream;
-	if (std::string error; !rawlogStream.open(rawlogFile, 9, error))
-		throw std::runtime_error("cannot write " + rawlogFile + ": " + error);
-	auto rawlog = mrpt::serialization::archiveFrom(rawlogStream);
-	CPoseWriter truth(opts.prefix + ".gt.txt"), slam(opts.prefix + ".slam.txt");
-	sim::CSlamError slamError(opts.seed);
-
 	const std::unique_ptr<sim::CScene> scene =
 		sim::findScene(opts.scene)->make();
 	const auto steps = static_cast<std::size_t>(
 		std::lround(opts.laps * scene->lapPeriod() * kRate));
-	sim::CMotionTruthWriter motion(
-		opts.prefix + ".motion.gz", *scene, opts.scene, kStartTime,
-		1.0 / kRate, steps);
-	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions motionModel;
+	sim::CSceneFiles files(opts.prefix, opts.seed, *scene, opts.scene, steps);
 	mrpt::poses::CPose2D previousPose = scene->robotPoseAt(0.0);
 	for (std::size_t k = 0; k < steps; ++k)
 	{
@@ -265,12 +313,8 @@ void simulate(const TOptions& opts)
 
 		// The increment since the previous scan, in the robot's frame (zero
 		// before the first scan), as the odometry measured it.
-		mrpt::obs::CActionRobotMovement2D odometry;
-		odometry.timestamp = stamp;
-		odometry.computeFromOdometry(
-			noisyOdometry(pose - previousPose, rng), motionModel);
-		mrpt::obs::CActionCollection actions;
-		actions.insert(odometry);
+		const mrpt::obs::CActionCollection actions =
+			sim::odometryAction(pose - previousPose, stamp, rng);
 		previousPose = pose;
 
 		auto scan = mrpt::obs::CObservation2DRangeScan::Create();
@@ -286,15 +330,9 @@ void simulate(const TOptions& opts)
 		mrpt::obs::CSensoryFrame frame;
 		frame.insert(scan);
 
-		rawlog << actions << frame;
-		truth.write(kStartTime + t, pose);
-		slam.write(kStartTime + t, slamError.estimate(pose));
-		motion.writeScan(k);
+		files.writeScan(k, pose, actions, frame);
 	}
-	rawlogStream.close();
-	truth.close();
-	slam.close();
-	motion.close();
+	files.close();
 	std::printf(
 		"evgrid-simulate: scene %s, %zu scans, %g s: %s.{rawlog,gt.txt,"
 		"slam.txt,motion.gz}\n",
@@ -310,7 +348,14 @@ int main(int argc, char** argv)
 		return code;
 	try
 	{
-		simulate(opts);
+		if (opts.scene == kStreet)
+		{
+			opts.street.prefix = opts.prefix;
+			opts.street.seed = opts.seed;
+			sim::simulateStreet(opts.street);
+		}
+		else
+			simulateRoom(opts);
 		return 0;
 	}
 	catch (const std::exception& e)

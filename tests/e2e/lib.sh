@@ -49,6 +49,18 @@ run_stock() {
 	ok "$name ran in $((SECONDS - start))s"
 }
 
+# help_has PROGRAM TEXT...: fails unless PROGRAM --help mentions every TEXT.
+# The help is read whole first: grep -q on a pipe stops reading early, and
+# under pipefail the program's next write then fails with SIGPIPE.
+help_has() {
+	local program=$1 help text
+	shift
+	help=$("$program" --help) || fail "$program --help exited with $?"
+	for text in "$@"; do
+		grep -qF -- "$text" <<<"$help" || fail "$(basename "$program") --help does not mention $text"
+	done
+}
+
 # The one file matching a glob pattern, or a failure.
 only_file() {
 	local matches=()

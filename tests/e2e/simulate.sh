@@ -10,7 +10,7 @@ simulate=$1 rawlogs=$2 scratch=$3
 
 rm -rf "$scratch"
 mkdir -p "$scratch/a" "$scratch/b"
-"$simulate" --help | grep -q -- '--seed' || fail "evgrid-simulate --help does not describe --seed"
+help_has "$simulate" '--seed'
 
 for run in a b; do
 	(cd "$scratch" && run_stock "$scratch/$run.log" 120 "" "$simulate" --seed 1 --laps 2 "$run/room_door_box")

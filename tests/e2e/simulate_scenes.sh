@@ -11,8 +11,7 @@ simulate=$1 evgrid=$2 rawlogs=$3 scratch=$4
 
 rm -rf "$scratch"
 mkdir -p "$scratch/a" "$scratch/b" "$scratch/seed2"
-"$simulate" --help | grep -q -- '--scene' || fail "evgrid-simulate --help does not describe --scene"
-"$simulate" --help | grep -q -- 'left C ITEMS' || fail "evgrid-simulate --help does not describe the motion file"
+help_has "$simulate" '--scene' 'left C ITEMS'
 if "$simulate" --scene nowhere "$scratch/x" 2>"$scratch/bad.log"; then fail "--scene nowhere was accepted"; fi
 grep -q 'people' "$scratch/bad.log" || fail "--scene nowhere does not list the scenes"
 
