@@ -21,8 +21,12 @@ TCloudCounts sortCloudIntoSectors(
 
 	TGroundPlane ground;  // the robot's base plane
 	if (rules.groundRemoval == GroundRemoval::Plane)
-		if (const auto plane = fitGroundPlane(points, TGroundFit()))
+	{
+		TGroundFit fit;
+		fit.sensorZ = sensor.z;
+		if (const auto plane = fitGroundPlane(points, fit))
 			ground = *plane, counts.planeFound = true;
+	}
 
 	double sx, sy, sz;
 	robotPose.composePoint(sensor.x, sensor.y, sensor.z, sx, sy, sz);

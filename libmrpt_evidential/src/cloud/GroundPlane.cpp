@@ -67,12 +67,16 @@ TGroundPlane refine(
 std::optional<TGroundPlane> fitGroundPlane(
 	const std::vector<mrpt::math::TPoint3Df>& points, const TGroundFit& fit)
 {
-	// Ground can only be low: within the offset and the steepest slope of
-	// the base plane.
+	// Ground can only be low: below the sensor by the mounting heights, give
+	// or take the steepest slope's rise.
 	std::vector<mrpt::math::TPoint3Df> low;
 	const double slope = std::tan(fit.maxSlope);
+	const double top = fit.sensorZ - fit.minSensorHeight, bottom = fit.sensorZ - fit.maxSensorHeight;
 	for (const auto& p : points)
-		if (std::abs(p.z) <= fit.maxOffset + slope * std::hypot(p.x, p.y)) low.push_back(p);
+	{
+		const double rise = slope * std::hypot(p.x, p.y);
+		if (p.z <= top + rise && p.z >= bottom - rise) low.push_back(p);
+	}
 	if (low.size() < std::max<std::size_t>(fit.minInliers, 3)) return std::nullopt;
 
 	std::vector<mrpt::math::TPoint3Df> sample;
@@ -87,7 +91,7 @@ std::optional<TGroundPlane> fitGroundPlane(
 	{
 		const auto plane = planeThrough(
 			sample[pick(rng)], sample[pick(rng)], sample[pick(rng)], fit.maxSlope);
-		if (!plane || std::abs(plane->c) > fit.maxOffset) continue;
+		if (!plane || !(plane->c <= top && plane->c >= bottom)) continue;
 		std::size_t count = 0;
 		for (const auto& p : sample) count += std::abs(plane->heightOf(p)) <= fit.inlierDistance;
 		if (count > bestCount) bestCount = count, best = plane;
@@ -99,7 +103,7 @@ std::optional<TGroundPlane> fitGroundPlane(
 	if (inliers < fit.minInliers || share < fit.minInlierShare) return std::nullopt;
 	// The refined plane must still obey the rules; else keep RANSAC's.
 	const double tilt = std::atan(std::hypot(refined.a, refined.b));
-	if (!(tilt <= fit.maxSlope && std::abs(refined.c) <= fit.maxOffset)) return best;
+	if (!(tilt <= fit.maxSlope && refined.c <= top && refined.c >= bottom)) return best;
 	return refined;
 }
 

@@ -28,18 +28,26 @@ struct TGroundFit
 	double inlierDistance = 0.1;
 	/** The ground is taken to slope less than this, radians. */
 	double maxSlope = 20.0 * 3.14159265358979323846 / 180.0;
-	/** Under the robot the ground is within this of its base plane, metres:
-	 * a car's roof or a table top cannot pass for the ground. */
-	double maxOffset = 0.5;
+	/** Height of the sensor in the robot's frame, metres. */
+	double sensorZ = 0.0;
+	/** The ground under the sensor lies between these distances below it,
+	 * metres: a lidar is mounted above the ground, and not higher than a
+	 * truck's roof. The robot's frame need not be on the ground (MRPT's
+	 * VLP-16 dataset has it at the sensor). */
+	double minSensorHeight = 0.3, maxSensorHeight = 5.0;
 	/** The fewest inliers for a plane, and the least share of the candidate
-	 * points (those low enough to be ground) they must be. */
+	 * points (those low enough to be ground) they must be: in a street the
+	 * candidates hold the lower parts of walls, cars and trees too, and the
+	 * ground holds 15 % of MRPT's VLP-16 scan. */
 	std::size_t minInliers = 30;
-	double minInlierShare = 0.2;
+	double minInlierShare = 0.1;
 };
 
 /** The plane most of the cloud's low points lie on (RANSAC on a sample of at
  * most a few thousand candidates, then least squares on the inliers), or
- * nothing when no plane meets `fit`'s rules. `points` are in the robot's
+ * nothing when no plane meets `fit`'s rules. Of two planes with as many
+ * inliers the first found wins; the ground of a lidar scan holds most of
+ * its points below the sensor, so a car's roof rarely competes. `points` are in the robot's
  * frame; the search is deterministic (fixed seed). Never throws. */
 std::optional<TGroundPlane> fitGroundPlane(
 	const std::vector<mrpt::math::TPoint3Df>& points, const TGroundFit& fit);
