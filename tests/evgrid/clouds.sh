@@ -1,6 +1,7 @@
-# evgrid build with 3-D clouds: MRPT's one-scan VLP-16 and RGB-D datasets,
-# read in place; the rotating scan, which the map cannot read; a stock MRPT
-# program with the plugin on a point-cloud rawlog.
+# 3-D clouds: evgrid build on MRPT's one-scan VLP-16 and RGB-D datasets, read
+# in place, and on the committed street sample of evgrid-simulate against its
+# footprint truth; stock observations2map with the plugin on the street's
+# clouds; the rotating scan, which the map cannot read.
 source "$(dirname "$0")/lib.sh"
 
 # 1. The VLP-16 scan (raw packets, decoded with their calibration): ground
@@ -27,7 +28,43 @@ contains "$s" "clouds: 1 3-D clouds: 1 inserted, 0 without a pose, 0 refused by 
 [ "$(count free "$s")" -gt 300 ] || fail "RGB-D: only $(count free "$s") free cells"
 [ "$(count occupied "$s")" -gt 100 ] || fail "RGB-D: only $(count occupied "$s") occupied cells"
 
-# 3. A rotating scan has no elevations in MRPT 2.5.8: counted, not inserted.
+# 3. The committed street sample of evgrid-simulate (a VLP-16 driving 3 s down
+#    a street with a hill, kerbs, parked cars, posts, a gantry over the road,
+#    people and a car), at the SLAM-like poses, against its footprint truth:
+#    obstacles read occupied, the ground, the kerbs and the gantry do not (the
+#    ground's share holds the cells the people and the car crossed).
+street="$(dirname "$EVGRID_INI")/street_vlp16"
+run 0 "$EVGRID" build -c "$EVGRID_INI" -i "$street.rawlog" -p "$street.slam.txt" -o "$T/street"
+contains "$T/street/summary.txt" "clouds: 30 3-D clouds: 30 inserted, 0 without a pose, 0 refused by the map (30 mrpt::obs::CObservationPointCloud)"
+run 0 "$EVGRID_CHECK" footprint "$T/street/map.evgrid" "$street.footprint.gz"
+cp "$OUT" "$T/street.footprint.txt"
+cat "$T/street.footprint.txt"
+share() { awk -v c="$1" '$1 == c { print $3 }' "$T/street.footprint.txt"; }
+seen() { awk -v c="$1" '$1 == c { print $2 }' "$T/street.footprint.txt"; }
+for cls in ground obstacle low overhang; do
+  [ "$(seen $cls)" -gt 1000 ] || fail "street: only $(seen $cls) $cls cells seen"
+done
+awk -v s="$(share obstacle)" 'BEGIN { exit !(s >= 95) }' || fail "street: $(share obstacle)% of obstacle cells occupied"
+for cls in ground:5 low:3 overhang:3; do
+  awk -v s="$(share ${cls%%:*})" -v m="${cls#*:}" 'BEGIN { exit !(s <= m) }' ||
+    fail "street: $(share ${cls%%:*})% of ${cls%%:*} cells occupied"
+done
+
+# 4. Stock observations2map with the plugin builds the same kind of map from
+#    a simplemap of the street's clouds (at their true poses).
+"$EVGRID_CHECK" to-simplemap "$street.rawlog" "$street.gt.txt" "$T/street.simplemap.gz" ||
+  fail "cannot make the street's simplemap"
+mkdir -p "$T/o2m"
+run 0 env LD_PRELOAD="$EVGRID_LIB" observations2map "$(dirname "$EVGRID_INI")/observations2map.ini" \
+  "$T/street.simplemap.gz" "$T/o2m/street"
+base="$T/o2m/street_mrpt_evidential__CEvidentialGridMap2D_00"
+contains "$base"_info.txt "insertions: 30"
+run 0 "$EVGRID_CHECK" footprint "$base.evgrid" "$street.footprint.gz"
+cp "$OUT" "$T/street.footprint.txt"
+awk -v s="$(share obstacle)" 'BEGIN { exit !(s >= 95) }' || fail "observations2map: $(share obstacle)% of obstacle cells occupied"
+awk -v s="$(share ground)" 'BEGIN { exit !(s <= 5) }' || fail "observations2map: $(share ground)% of ground cells occupied"
+
+# 5. A rotating scan has no elevations in MRPT 2.5.8: counted, not inserted.
 run 1 "$EVGRID" build -c "$EVGRID_INI" -i "$DATASETS/rot_scan_velodyne.rawlog" -o "$T/rot"
 contains "$ERR" "no scan was inserted"
 [ ! -e "$T/rot/summary.txt" ] || fail "a failed run wrote $T/rot/summary.txt"

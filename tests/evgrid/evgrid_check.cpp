@@ -12,6 +12,15 @@
  *                                            observation-only format
  *   evgrid_check farther RAWLOG M OUT     -> OUT (gzip): the same rawlog, every
  *                                            scan's ranges M metres longer
+ *   evgrid_check to-simplemap RAWLOG POSES OUT
+ *                                         -> OUT (gzip): a simplemap of the
+ *                                            rawlog's sensory frames, frame k at
+ *                                            line k of POSES ("time x y phi")
+ *   evgrid_check footprint MAP FOOTPRINT  -> for each class of evgrid-simulate's
+ *                                            footprint (ground, obstacle, low,
+ *                                            overhang): "CLASS SEEN OCCUPIED_PCT",
+ *                                            SEEN its cells the map decides Free or
+ *                                            Occupied at their centres
  * Exit code 0 on success, 1 with a message otherwise. */
 
 #include <mrpt/core/Clock.h>
@@ -24,12 +33,18 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/maps/CSimpleMap.h>
 #include <mrpt/poses/CPose2D.h>
+#include <mrpt/poses/CPose3DPDFGaussian.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 
 #include <cstdio>
+#include <fstream>
 #include <functional>
+#include <map>
+#include <sstream>
+#include <vector>
 #include <iostream>
 #include <opencv2/videoio.hpp>
 #include <stdexcept>
@@ -187,6 +202,90 @@ int farther(const std::string& rawlog, double metres, const std::string& out)
 }
 }  // namespace
 
+int toSimplemap(const std::string& rawlog, const std::string& poses, const std::string& out)
+{
+	std::ifstream file(poses);
+	std::vector<CPose2D> path;
+	for (std::string line; std::getline(file, line);)
+	{
+		if (line.empty() || line[0] == '%' || line[0] == '#') continue;
+		std::istringstream words(line);
+		double t, x, y, phi;
+		if (!(words >> t >> x >> y >> phi)) throw std::runtime_error(poses + ": bad line " + line);
+		path.emplace_back(x, y, phi);
+	}
+	mrpt::maps::CSimpleMap simplemap;
+	std::size_t k = 0;
+	forEachFrame(rawlog, [&](const CPose2D&, const CSensoryFrame& sf) {
+		if (k >= path.size()) throw std::runtime_error(poses + ": fewer poses than frames");
+		simplemap.insert(
+			mrpt::poses::CPose3DPDFGaussian(mrpt::poses::CPose3D(path[k++])),
+			sf);
+	});
+	mrpt::io::CFileGZOutputStream f(out);
+	mrpt::serialization::archiveFrom(f) << simplemap;
+	return 0;
+}
+
+/** The cells of a footprint line's items ("I" or "I-J"). */
+std::vector<long> footprintCells(std::istringstream& items)
+{
+	std::vector<long> cells;
+	long count = 0;
+	items >> count;
+	std::string item;
+	while (items >> item)
+	{
+		const auto dash = item.find('-');
+		const long a = std::stol(item.substr(0, dash));
+		const long b = dash == std::string::npos ? a : std::stol(item.substr(dash + 1));
+		for (long c = a; c <= b; ++c) cells.push_back(c);
+	}
+	if (static_cast<long>(cells.size()) != count)
+		throw std::runtime_error("a footprint line whose count is not its cells'");
+	return cells;
+}
+
+int footprint(const std::string& mapPath, const std::string& footprintPath)
+{
+	mrpt_evidential::CEvidentialGridMap2D map;
+	mrpt::io::CFileGZInputStream in(mapPath);
+	mrpt::serialization::archiveFrom(in) >> map;
+	mrpt::io::CFileGZInputStream fp(footprintPath);
+	std::string line, text;
+	while (fp.getline(line)) text += line + "\n";
+	std::istringstream lines(text);
+	double x0 = 0, y0 = 0, res = 0;
+	long nx = 0, ny = 0;
+	std::map<long, std::string> classOf;
+	while (std::getline(lines, line))
+	{
+		std::istringstream words(line);
+		std::string key;
+		words >> key;
+		if (key == "grid") words >> x0 >> y0 >> res >> nx >> ny;
+		if (key == "obstacle" || key == "low" || key == "overhang")
+			for (const long c : footprintCells(words)) classOf[c] = key;
+	}
+	if (!(res > 0) || nx <= 0 || ny <= 0) throw std::runtime_error(footprintPath + ": no grid line");
+	std::map<std::string, std::pair<long, long>> seenAndOccupied;
+	for (long c = 0; c < nx * ny; ++c)
+	{
+		const auto it = classOf.find(c);
+		const std::string cls = it == classOf.end() ? "ground" : it->second;
+		const double x = x0 + (static_cast<double>(c % nx) + 0.5) * res;
+		const double y = y0 + (static_cast<double>(c / nx) + 0.5) * res;
+		const auto d = map.getCellDecision(x, y);
+		auto& [seen, occupied] = seenAndOccupied[cls];
+		if (d == mrpt_evidential::Decision::Free || d == mrpt_evidential::Decision::Occupied) ++seen;
+		if (d == mrpt_evidential::Decision::Occupied) ++occupied;
+	}
+	for (const auto& [cls, n] : seenAndOccupied)
+		std::printf("%s %ld %.2f\n", cls.c_str(), n.first,
+					n.first > 0 ? 100.0 * static_cast<double>(n.second) / static_cast<double>(n.first) : 0.0);
+	return 0;
+}
+
 int main(int argc, char** argv)
 {
 	try
@@ -196,6 +295,8 @@ int main(int argc, char** argv)
 		if (what == "gridmap" && argc == 3) return gridmap(argv[2]);
 		if (what == "video" && argc == 3) return video(argv[2]);
 		if (what == "cells" && argc == 3) return cells(argv[2]);
+		if (what == "to-simplemap" && argc == 5) return toSimplemap(argv[2], argv[3], argv[4]);
+		if (what == "footprint" && argc == 4) return footprint(argv[2], argv[3]);
 		if (what == "odometry-path" && argc == 4)
 			return odometryPath(argv[2], argv[3]);
 		if (what == "to-obs-only" && argc == 4)
