@@ -78,7 +78,10 @@ std::optional<int> parseOptions(
 {
 	TCLAP::CmdLine cmd(
 		"Builds an evidential grid map from a rawlog (action/sensory-frame or "
-		"observation-only format, plain or .gz) or a simplemap, and writes "
+		"observation-only format, plain or .gz) or a simplemap: its 2-D scans "
+		"(CObservation2DRangeScan) and 3-D clouds (CObservationPointCloud, "
+		"CObservationVelodyneScan, CObservation3DRangeScan; other observations "
+		"are counted, not inserted). It writes "
 		"into the output folder: map.evgrid (the serialized map), "
 		"evidential.png, betp.png, conflict.png and summary.txt; with --every, "
 		"frames/; with --animation, growth.avi. A failed run leaves the folder "

@@ -10,11 +10,13 @@ namespace mrpt_evidential
 {
 namespace
 {
-/** RANSAC's tries: with a ground share of 30 % and more, the chance that no
- * try draws three ground points is below 1e-6. */
-constexpr int kTries = 500;
-/** Candidates scored per try, at most: the rest only refine the plane. */
-constexpr std::size_t kSample = 3000;
+/** RANSAC draws from the lowest candidate of each column of kColumn metres
+ * within kColumnReach of the robot: mostly ground, even where the ground is
+ * a small share of the points (walls and crowns stand on it). */
+constexpr double kColumn = 1.0, kColumnReach = 40.0;
+/** RANSAC's tries: with ground in 40 % of the columns and more, the chance
+ * that no try draws three ground points is below 1e-5. */
+constexpr int kTries = 200;
 
 /** The plane through three points, if they span one that is not steeper
  * than the rules allow. */
@@ -79,9 +81,20 @@ std::optional<TGroundPlane> fitGroundPlane(
 	}
 	if (low.size() < std::max<std::size_t>(fit.minInliers, 3)) return std::nullopt;
 
+	constexpr auto side = static_cast<std::size_t>(2 * kColumnReach / kColumn);
+	std::vector<int> lowest(side * side, -1);
+	for (std::size_t i = 0; i < low.size(); ++i)
+	{
+		const double cx = std::floor((low[i].x + kColumnReach) / kColumn);
+		const double cy = std::floor((low[i].y + kColumnReach) / kColumn);
+		if (!(cx >= 0 && cy >= 0 && cx < side && cy < side)) continue;
+		int& slot = lowest[static_cast<std::size_t>(cx) + side * static_cast<std::size_t>(cy)];
+		if (slot < 0 || low[i].z < low[static_cast<std::size_t>(slot)].z) slot = static_cast<int>(i);
+	}
 	std::vector<mrpt::math::TPoint3Df> sample;
-	const std::size_t stride = (low.size() + kSample - 1) / kSample;
-	for (std::size_t i = 0; i < low.size(); i += stride) sample.push_back(low[i]);
+	for (const int i : lowest)
+		if (i >= 0) sample.push_back(low[static_cast<std::size_t>(i)]);
+	if (sample.size() < 3) return std::nullopt;
 
 	std::minstd_rand rng(1);
 	std::uniform_int_distribution<std::size_t> pick(0, sample.size() - 1);
