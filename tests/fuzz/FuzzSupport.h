@@ -172,4 +172,45 @@ void visit(IO& io, InsertCase& c)
 	}
 }
 
+/** The fuzz_cloud input: map options from table indices and bytes, then up
+ * to four clouds of raw points (any float), each with its observation type,
+ * sensor and robot pose and time. */
+struct CloudCase
+{
+	std::uint8_t resolution = 0, model = 1, handling = 2, removal = 1, returns = 0,
+				 minHeight = 10, heightSpan = 36, sectorWidth = 0, maxRange = 1;
+	struct Cloud
+	{
+		/** 0: CObservationPointCloud, 1: CObservationVelodyneScan's
+		 * point_cloud, 2: CObservation3DRangeScan's points3D. */
+		std::uint8_t type = 0;
+		float sensorPose[6] = {0, 0, 1.8f, 0, 0, 0};
+		double robotPose[6] = {};
+		std::int64_t ticks = 0;
+		std::vector<float> xyz;  //!< x, y, z of each point in turn
+	};
+	std::vector<Cloud> clouds;
+};
+
+/** The layout of CloudCase, for Reader and Writer alike. */
+template <typename IO>
+void visit(IO& io, CloudCase& c)
+{
+	for (std::uint8_t* b :
+		 {&c.resolution, &c.model, &c.handling, &c.removal, &c.returns, &c.minHeight,
+		  &c.heightSpan, &c.sectorWidth, &c.maxRange})
+		io(*b);
+	std::uint8_t count = static_cast<std::uint8_t>(c.clouds.size());
+	io(count);
+	c.clouds.resize(count % 5);
+	for (CloudCase::Cloud& cl : c.clouds)
+	{
+		io(cl.type);
+		for (float& v : cl.sensorPose) io(v);
+		for (double& v : cl.robotPose) io(v);
+		io(cl.ticks);
+		io(cl.xyz, 3 * 20000);
+	}
+}
+
 }  // namespace fuzz

@@ -1,5 +1,5 @@
 /* fuzz_seeds DIR: writes seed inputs for the fuzz targets into
- * DIR/deserialize, DIR/insert and DIR/ini, from the current code, so that
+ * DIR/deserialize, DIR/insert, DIR/cloud and DIR/ini, from the current code, so that
  * they follow the serialization format and the input layouts. tests/fuzz/
  * corpus/ holds a copy (plus rawlogs/evgrid.ini); run_fuzzer.sh uses both. */
 #include <mrpt/obs/CObservation2DRangeScan.h>
@@ -9,6 +9,7 @@
 #include <fstream>
 #include <limits>
 
+#include "../support/clouds.h"
 #include "FuzzSupport.h"
 
 using namespace mrpt_evidential;
@@ -145,6 +146,51 @@ void iniSeeds(const fs::path& dir)
 }
 }  // namespace
 
+void cloudSeeds(const fs::path& dir)
+{
+	const auto write = [&](const std::string& name, fuzz::CloudCase c) {
+		fuzz::Writer out;
+		fuzz::visit(out, c);
+		save(dir / name, out.bytes);
+	};
+	// A street of the test factory's lidar, coarse: ground, walls, a car.
+	test::TLidar lidar;
+	lidar.azimuthStep = 6.0;
+	const auto street = test::lidarCloud(
+		{0.0, {{-20, 20, 4, 5, 0, 6}, {-20, 20, -5, -4, 0, 6}, {2, 6, 1, 2.8, 0, 1.5}}}, lidar);
+	fuzz::CloudCase::Cloud cloud;
+	cloud.ticks = 1'000'000'000;
+	const auto& pc = *street->pointcloud;
+	for (std::size_t i = 0; i < pc.size(); ++i)
+	{
+		float x, y, z;
+		pc.getPoint(i, x, y, z);
+		cloud.xyz.insert(cloud.xyz.end(), {x, y, z});
+	}
+	fuzz::CloudCase c;
+	c.clouds = {cloud};
+	write("street", c);
+
+	// Each observation type, one upside down, odd points.
+	const float nan = std::numeric_limits<float>::quiet_NaN();
+	const float inf = std::numeric_limits<float>::infinity();
+	fuzz::CloudCase::Cloud odd = cloud;
+	odd.xyz.resize(60);
+	odd.xyz.insert(odd.xyz.end(), {nan, 0, 0, 1, inf, 0, 0, 0, 0, 0.001f, 0, 0, 1e30f, 1e30f, -1e30f});
+	c.clouds = {odd, odd, odd};
+	for (std::uint8_t t = 0; t < 3; ++t) c.clouds[t].type = t;
+	c.clouds[1].sensorPose[5] = static_cast<float>(M_PI);
+	c.removal = 0;
+	write("odd-points-every-type", c);
+
+	c = {};
+	c.clouds = {cloud, {}};
+	c.clouds[0].robotPose[5] = M_PI;  // the robot upside down
+	c.removal = 2;
+	c.returns = 1;
+	write("upside-down-and-empty", c);
+}
+
 int main(int argc, char** argv)
 {
 	if (argc != 2)
@@ -155,6 +201,7 @@ int main(int argc, char** argv)
 	const fs::path dir = argv[1];
 	deserializeSeeds(dir / "deserialize");
 	insertSeeds(dir / "insert");
+	cloudSeeds(dir / "cloud");
 	iniSeeds(dir / "ini");
 	return 0;
 }

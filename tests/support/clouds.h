@@ -11,7 +11,7 @@
 #include <limits>
 #include <vector>
 
-namespace test
+namespace mrpt_evidential::test
 {
 /** A box, metres in the robot's frame; z from the flat ground. */
 struct TBox
@@ -105,4 +105,4 @@ inline mrpt::obs::CObservationPointCloud::Ptr cloudOf(
 	return obs;
 }
 
-}  // namespace test
+}  // namespace mrpt_evidential::test
