@@ -10,4 +10,6 @@ int runInspect(int argc, char** argv, int first);
 int runExport(int argc, char** argv, int first);
 int runCompare(int argc, char** argv, int first);
 int runScoreMotion(int argc, char** argv, int first);
+int runMerge(int argc, char** argv, int first);
+int runDiff(int argc, char** argv, int first);
 }  // namespace evgrid

@@ -29,7 +29,11 @@ void printOverview(std::ostream& out)
 		   "  score-motion  replay a rawlog of evgrid-simulate scan by scan; "
 		   "score the map's\n"
 		   "           motion layer (Appeared, Disappeared) against the "
-		   "simulator's ground truth\n\n"
+		   "simulator's ground truth\n"
+		   "  merge    fuse saved maps of the same place from several runs "
+		   "into one\n"
+		   "  diff     what appeared and what disappeared between two runs' "
+		   "maps\n\n"
 		   "'evgrid <subcommand> --help' lists a subcommand's options.\n"
 		   "Exit codes: 0 success, 1 failure (the message names the file), 2 "
 		   "bad command line.\n";
@@ -61,6 +65,8 @@ int main(int argc, char** argv)
 	else if (sub == "export") run = evgrid::runExport;
 	else if (sub == "compare") run = evgrid::runCompare;
 	else if (sub == "score-motion") run = evgrid::runScoreMotion;
+	else if (sub == "merge") run = evgrid::runMerge;
+	else if (sub == "diff") run = evgrid::runDiff;
 	else
 	{
 		evgrid::printError("evgrid", "unknown subcommand '" + sub + "'");

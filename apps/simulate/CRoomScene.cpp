@@ -55,6 +55,17 @@ std::vector<TShape> CRoomDoorBoxScene::movingAt(double t) const
 			t, kBoxSize, kBoxSize)};
 }
 
+std::vector<TShape> CChangedRoomScene::staticShapes() const
+{
+	using S = CRoomDoorBoxScene;
+	std::vector<TShape> shapes = CRoomScene::staticShapes();
+	shapes.push_back(m_after ? kDoorOpen : kDoorClosed);
+	const double x = m_after ? S::kBoxEndX : S::kBoxStartX, y = m_after ? S::kBoxEndY : S::kBoxStartY;
+	shapes.push_back(TRect{
+		x - 0.5 * S::kBoxSize, y - 0.5 * S::kBoxSize, x + 0.5 * S::kBoxSize, y + 0.5 * S::kBoxSize});
+	return shapes;
+}
+
 std::vector<TShape> CStaticRoomScene::staticShapes() const
 {
 	std::vector<TShape> shapes = CRoomScene::staticShapes();

@@ -52,4 +52,19 @@ class CStaticRoomScene : public CRoomScene
 	std::vector<TShape> movingAt(double) const override { return {}; }
 };
 
+/** The scenes "room_before" and "room_after": the room as it stands before
+ * and after room_door_box's changes, nothing moving in either: the door shut
+ * and the box at its start, or the door open and the box at its end. Two
+ * runs of a place that changed in between, for evgrid diff and merge. */
+class CChangedRoomScene : public CRoomScene
+{
+   public:
+	explicit CChangedRoomScene(bool after) : m_after(after) {}
+	std::vector<TShape> staticShapes() const override;
+	std::vector<TShape> movingAt(double) const override { return {}; }
+
+   private:
+	bool m_after;
+};
+
 }  // namespace mrpt_evidential::simulate

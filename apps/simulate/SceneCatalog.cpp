@@ -42,6 +42,14 @@ const std::vector<TSceneEntry>& sceneCatalog()
 		 make<CPeopleScene>},
 		{"static", "nothing moves; the door stands open",
 		 make<CStaticRoomScene>},
+		{"room_before",
+		 "nothing moves; the door is shut and the box stands where\n"
+		 "room_door_box's starts (a run before its changes)",
+		 [] { return std::unique_ptr<CScene>(std::make_unique<CChangedRoomScene>(false)); }},
+		{"room_after",
+		 "nothing moves; the door is open and the box stands where\n"
+		 "room_door_box's ends (a run after its changes)",
+		 [] { return std::unique_ptr<CScene>(std::make_unique<CChangedRoomScene>(true)); }},
 	};
 	return catalog;
 }

@@ -3,7 +3,7 @@
 source "$(dirname "$0")/lib.sh"
 
 run 0 "$EVGRID" --help
-for sub in build inspect export compare score-motion; do contains "$OUT" "  $sub "; done
+for sub in build inspect export compare score-motion merge diff; do contains "$OUT" "  $sub "; done
 run 0 "$EVGRID" --version
 contains "$OUT" "evgrid "
 run 2 "$EVGRID"
@@ -11,7 +11,7 @@ contains "$ERR" "Usage: evgrid <subcommand>"
 run 2 "$EVGRID" frobnicate
 contains "$ERR" "unknown subcommand 'frobnicate'"
 
-for sub in build inspect export compare score-motion; do
+for sub in build inspect export compare score-motion merge diff; do
   run 0 "$EVGRID" "$sub" --help
   contains "$OUT" "USAGE:"
   # Every option of --help appears in the manual, under the subcommand.

@@ -13,6 +13,7 @@
 #include <mrpt_evidential/scan/CPolarSourceGrid.h>
 
 #include <array>
+#include <functional>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -216,6 +217,42 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	std::string geometryText(const std::string& indent = "") const;
 	/** Centres of the cells whose decision is Occupied. */
 	std::vector<std::pair<double, double>> getOccupiedCellCenters() const;
+	/** @} */
+
+	/** @name Maps from many runs (doc/map.md, "Maps from many runs")
+	 * Both maps must share a lattice: the same resolution, and origins a
+	 * whole number of cells apart. @{ */
+	/** Fuses `other` into this map, cell by cell: each cell of `other` that
+	 * it saw, read decayed to its own latest time, is combined with this
+	 * map's cell by `rule`, its conflict handled by `handling`. The map grows
+	 * to hold other's extent, takes the later of the two latest times, sets
+	 * its conflictHandling to `handling` (Keep: the cells keep the conflict
+	 * between the runs), keeps the cells that held impacts in either, and
+	 * clears its motion layer (events of two runs share no clock). Fusing
+	 * into an empty map copies. \throws std::invalid_argument if the
+	 *  lattices differ (the message gives both), or if the grid cannot grow
+	 *  to other's extent within maxCells(); the map is then unchanged. */
+	void fuseMap(const CEvidentialGridMap2D& other, FusionRule rule, ConflictHandling handling);
+	/** What changed from an earlier run of the same place to this one. */
+	struct TMapChanges
+	{
+		/** Cells of this map (index cx + sizeX cy) where something
+		 * appeared (free then, occupied now) or disappeared. */
+		std::vector<std::size_t> appeared, disappeared;
+		/** Cells that both runs saw (m(Omega) below 1 in both). */
+		std::size_t compared = 0;
+	};
+	/** The cells both maps saw whose conflict of one cause, m_earlier(F)
+	 * m_this(O) or m_earlier(O) m_this(F), reaches `minConflict`, except
+	 * those within `clearance` metres of a cell that leans occupied in both
+	 * (walls seen from two runs' poses). \throws std::invalid_argument if
+	 *  the lattices differ, minConflict is not in (0, 1] or clearance not in
+	 *  [0, 10]. */
+	TMapChanges changesSince(
+		const CEvidentialGridMap2D& earlier, double minConflict = 0.5, double clearance = 0.1) const;
+	/** This map as getAsMotionImage() draws it, with `changes` (of
+	 * changesSince()) as the motion: appeared orange, disappeared blue. */
+	void getAsChangesImage(const TMapChanges& changes, mrpt::img::CImage& img) const;
 	/** @} */
 
 	/** @name CMetricMap interface
@@ -466,6 +503,13 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	void fuseWithMotion(CScanImpacts& impacts);
 	/** What the motion layer says of cell idx. */
 	Motion motionOf(std::size_t idx) const;
+	/** Paints the static map in grey levels with `motion(idx)` over it. */
+	void paintMotion(mrpt::img::CImage& img, const std::function<Motion(std::size_t)>& motion) const;
+	/** The index in this map of `other`'s cell idx, or nothing when it
+	 * lies outside; `offsetX`, `offsetY`: other's origin in this map's
+	 * cells. */
+	std::optional<std::size_t> cellOfOther(
+		const GridGeometry& other, std::size_t idx, int offsetX, int offsetY) const;
 	/** Drops the likelihood field; the next likelihood rebuilds it. */
 	void invalidateLikelihoodCache();
 

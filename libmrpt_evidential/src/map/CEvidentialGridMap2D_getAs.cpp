@@ -115,9 +115,15 @@ void CEvidentialGridMap2D::getAsConflictImage(mrpt::img::CImage& img) const
 
 void CEvidentialGridMap2D::getAsMotionImage(mrpt::img::CImage& img) const
 {
+	paintMotion(img, [this](std::size_t idx) { return motionOf(idx); });
+}
+
+void CEvidentialGridMap2D::paintMotion(
+	mrpt::img::CImage& img, const std::function<Motion(std::size_t)>& motion) const
+{
 	// Blue first, as in getAsEvidentialImage().
-	paint(m_grid, img, mrpt::img::CH_RGB, [this](std::size_t idx, std::uint8_t* p) {
-		switch (motionOf(idx))
+	paint(m_grid, img, mrpt::img::CH_RGB, [&](std::size_t idx, std::uint8_t* p) {
+		switch (motion(idx))
 		{
 			case Motion::Appeared: p[0] = 0, p[1] = 128, p[2] = 255; return;
 			case Motion::Disappeared: p[0] = 255, p[1] = 160, p[2] = 0; return;
