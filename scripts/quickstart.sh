@@ -19,6 +19,8 @@ packages=(
   mrpt-apps mrpt-common
   libeigen3-dev libopencv-dev libgtest-dev libbenchmark-dev
   xvfb xauth x11-utils imagemagick
+  # the fleet recipe (doc/recipes/fleet.md)
+  parallel
   # the sanitizer and fuzzing builds of the tests (doc/reliability.md):
   # clang, its runtimes (libFuzzer, ASan, UBSan, TSan) and llvm-symbolizer
   clang libclang-rt-14-dev llvm
