@@ -42,7 +42,11 @@ struct PlanarSensorPose;
  * by one of the lidar inverse sensor models (SensorModel.h), placed at the
  * sensor's pose, interpolated bilinearly onto the cells they inform, and fused
  * with the cells' previous masses, decayed by the data time elapsed since
- * they were last written. Every cell is fused at most once per scan.
+ * they were last written. Every cell is fused at most once per scan. 3-D
+ * clouds (`CObservationPointCloud`, `CObservationVelodyneScan`,
+ * `CObservation3DRangeScan`) go the same way once their ground is removed
+ * and their points grouped by azimuth (TInsertionOptions::groundRemoval).
+ * Other observations are not for this map: insertObservation() returns false.
  *
  * In a CMultiMetricMap .ini file it is the map `evidentialGrid`:
  * \code

@@ -28,8 +28,9 @@ TCloudCounts sortCloudIntoSectors(
 			ground = *plane, counts.planeFound = true;
 	}
 
-	double sx, sy, sz;
-	robotPose.composePoint(sensor.x, sensor.y, sensor.z, sx, sy, sz);
+	const auto& R = robotPose.getRotationMatrix();
+	const double r00 = R(0, 0), r01 = R(0, 1), r02 = R(0, 2), r10 = R(1, 0), r11 = R(1, 1),
+				 r12 = R(1, 2);
 	for (const auto& p : points)
 	{
 		const double dx0 = p.x - sensor.x, dy0 = p.y - sensor.y, dz0 = p.z - sensor.z;
@@ -51,9 +52,9 @@ TCloudCounts sortCloudIntoSectors(
 			}
 			obstacle = h >= rules.minObstacleHeight;
 		}
-		double wx, wy, wz;
-		robotPose.composePoint(p.x, p.y, p.z, wx, wy, wz);
-		const double dx = wx - sx, dy = wy - sy;
+		// Only x and y of the point in the world, from the sensor's place.
+		const double dx = r00 * (p.x - sensor.x) + r01 * (p.y - sensor.y) + r02 * (p.z - sensor.z);
+		const double dy = r10 * (p.x - sensor.x) + r11 * (p.y - sensor.y) + r12 * (p.z - sensor.z);
 		const double range = std::hypot(dx, dy);
 		// Nearest sector centre; the last one wraps to the first.
 		const auto s = static_cast<std::size_t>(std::lround((std::atan2(dy, dx) + M_PI) / spacing)) %

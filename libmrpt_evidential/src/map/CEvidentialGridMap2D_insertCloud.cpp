@@ -29,12 +29,19 @@ void appendInRobotFrame(
 	std::vector<mrpt::math::TPoint3Df>& out)
 {
 	out.reserve(out.size() + n);
+	// The pose's rotation and translation once, not a library call a point.
+	const auto& R = sensorPose.getRotationMatrix();
+	const double r00 = R(0, 0), r01 = R(0, 1), r02 = R(0, 2), r10 = R(1, 0), r11 = R(1, 1),
+				 r12 = R(1, 2), r20 = R(2, 0), r21 = R(2, 1), r22 = R(2, 2);
+	const double tx = sensorPose.x(), ty = sensorPose.y(), tz = sensorPose.z();
 	for (std::size_t i = 0; i < n; ++i)
 	{
-		double x, y, z;
 		const mrpt::math::TPoint3Df p = coordinate(i);
-		sensorPose.composePoint(p.x, p.y, p.z, x, y, z);
-		out.emplace_back(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
+		const double x = p.x, y = p.y, z = p.z;
+		out.emplace_back(
+			static_cast<float>(tx + r00 * x + r01 * y + r02 * z),
+			static_cast<float>(ty + r10 * x + r11 * y + r12 * z),
+			static_cast<float>(tz + r20 * x + r21 * y + r22 * z));
 	}
 }
 

@@ -91,7 +91,9 @@ CEvidentialGridMap2D::TMapChanges CEvidentialGridMap2D::changesSince(
 		throw std::invalid_argument(
 			"clearance must be in [0, 10] m, got " + detail::shortestText(clearance));
 	const GridGeometry& g = geometry();
-	const auto [ox, oy] = latticeOffset(earlier.geometry(), g);
+	// Plain ints: lambdas may not capture structured bindings in C++17.
+	const std::pair<int, int> offset = latticeOffset(earlier.geometry(), g);
+	const int ox = offset.first, oy = offset.second;
 	const GridGeometry& e = earlier.geometry();
 	// Per cell of this map: the earlier masses, or nothing unseen there.
 	const auto before = [&](int cx, int cy) -> std::optional<Mass> {
