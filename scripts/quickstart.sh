@@ -21,6 +21,9 @@ packages=(
   xvfb xauth x11-utils imagemagick
   # the fleet recipe (doc/recipes/fleet.md)
   parallel
+  # the Debian packages (scripts/build-deb.sh): dpkg-shlibdeps, and file,
+  # with which CPack finds the binaries to give it
+  dpkg-dev file
   # the sanitizer and fuzzing builds of the tests (doc/reliability.md):
   # clang, its runtimes (libFuzzer, ASan, UBSan, TSan) and llvm-symbolizer
   clang libclang-rt-14-dev llvm
