@@ -27,6 +27,12 @@ class CMetricMap;
  * pointers, and CMetricMap::boundingBox() is a virtual. */
 #define MRPT_EVIDENTIAL_MRPT_SINCE_2_11_3 (MRPT_VERSION >= 0x2B3)
 
+/** MRPT 2.11.3: a map list read from an .ini (TSetOfMetricMapInitializers::
+ * loadFromConfigFile) that names a map class nobody registered throws;
+ * before, the map was skipped. A stock program reads `evidentialGrid` only
+ * with the plugin loaded before its configuration (LD_PRELOAD). */
+#define MRPT_EVIDENTIAL_MRPT_REJECTS_UNKNOWN_MAPS MRPT_EVIDENTIAL_MRPT_SINCE_2_11_3
+
 #if MRPT_EVIDENTIAL_MRPT_SINCE_2_11_3
 /** What CEvidentialGridMap2D::boundingBox() is to CMetricMap: an override
  * since MRPT 2.11.3, a method of the map alone before. */
