@@ -17,6 +17,7 @@
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
+#include <mrpt_evidential/MrptCompat.h>
 #include "insert/PolarToCartesian.h"
 
 #include "../tests/support/scans.h"
@@ -392,7 +393,7 @@ class RecordingReporter : public benchmark::ConsoleReporter
 	void ReportRuns(const std::vector<Run>& runs) override
 	{
 		for (const Run& r : runs)
-			if (!r.error_occurred && r.aggregate_name.empty())
+			if (!mrpt_evidential::compat::benchmarkRunFailed(r) && r.aggregate_name.empty())
 				microseconds[caseName(r.benchmark_name())] = r.GetAdjustedRealTime();
 		ConsoleReporter::ReportRuns(runs);
 	}

@@ -54,6 +54,11 @@ function(mrpt_evidential_add_suite name)
     set_target_properties(${name} PROPERTIES CROSSCOMPILING_EMULATOR "${launcher}")
   endif()
   add_dependencies(${name} memory_budget)
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 TEST_PREFIX "${arg_TEST_PREFIX}"
+  # TEST_PREFIX only when given: CMake 3.31 (Debian 13) warns of an empty one.
+  set(prefix)
+  if(arg_TEST_PREFIX)
+    set(prefix TEST_PREFIX "${arg_TEST_PREFIX}")
+  endif()
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 ${prefix}
     PROPERTIES LABELS unit)
 endfunction()

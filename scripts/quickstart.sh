@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Set-up and entry points of mrpt-evidential on Debian bookworm, as root.
+# Set-up and entry points of mrpt-evidential on Debian bookworm (MRPT 2.5.8)
+# and trixie (MRPT 2.14), as root.
 #   scripts/quickstart.sh demo   install dependencies, build, map MRPT's SENA dataset
 #   scripts/quickstart.sh test   install dependencies, build, run every test
 #   scripts/quickstart.sh build  install dependencies and build only
@@ -11,6 +12,18 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 # Absolute: the demo runs icp-slam from another folder.
 build_dir=$(realpath -m "${BUILD_DIR:-$here/build}")
 jobs=${JOBS:-2}
+
+# The release decides the clang runtime's package: clang 14 on bookworm,
+# clang 19 on trixie.
+codename=$(. /etc/os-release && echo "${VERSION_CODENAME:-}")
+case "$codename" in
+  bookworm) clang_runtime=libclang-rt-14-dev ;;
+  trixie) clang_runtime=libclang-rt-19-dev ;;
+  *)
+    echo "quickstart: made for Debian bookworm and trixie, not '${codename:-unknown}': trying Debian's default clang runtime" >&2
+    clang_runtime=libclang-rt-dev
+    ;;
+esac
 
 packages=(
   g++ cmake make
@@ -26,7 +39,7 @@ packages=(
   dpkg-dev file
   # the sanitizer and fuzzing builds of the tests (doc/reliability.md):
   # clang, its runtimes (libFuzzer, ASan, UBSan, TSan) and llvm-symbolizer
-  clang libclang-rt-14-dev llvm
+  clang "$clang_runtime" llvm
 )
 
 install_dependencies() {

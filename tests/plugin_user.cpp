@@ -10,8 +10,10 @@
 #include <mrpt/poses/CPose3DPDF.h>
 #include <mrpt/system/os.h>
 
+#include <cstddef>
 #include <cstdio>
 #include <filesystem>
+#include <iterator>
 #include <string>
 
 namespace
@@ -65,13 +67,16 @@ maxRange=30
 		simplemap.loadFromFile(
 			std::string(MRPT_DATASETS_DIR) + "/malaga-cs-fac-building.simplemap.gz"),
 		"malaga simplemap read");
-	maps.loadFromProbabilisticPosesAndObservations(simplemap);
+	maps.loadFromSimpleMap(simplemap);
 	check(!map->isEmpty(), "scans inserted: " + map->asString());
 
 	// Score a scan at its own pose and 0.5 m away.
-	const auto& [posePdf, frame] = simplemap.get(simplemap.size() / 2);
-	const auto scan = frame->getObservationByClass<mrpt::obs::CObservation2DRangeScan>();
-	const mrpt::poses::CPose3D pose = posePdf->getMeanVal();
+	// Iterated, a keyframe has `pose` and `sf` in MRPT 2.5 (Pair) and 2.14
+	// (Keyframe) alike; get() returns a tuple in 2.5, a Keyframe in 2.14.
+	const auto& keyframe = *std::next(
+		simplemap.begin(), static_cast<std::ptrdiff_t>(simplemap.size() / 2));
+	const auto scan = keyframe.sf->getObservationByClass<mrpt::obs::CObservation2DRangeScan>();
+	const mrpt::poses::CPose3D pose = keyframe.pose->getMeanVal();
 	const double atPose = map->computeObservationLikelihood(*scan, pose);
 	const double away = map->computeObservationLikelihood(
 		*scan, pose + mrpt::poses::CPose3D(0.5, 0, 0, 0, 0, 0));

@@ -122,6 +122,36 @@ TEST(MapIni, CreatedFromIniWithEveryOption)
 	EXPECT_EQ(o.groundReturns, GroundReturns::Nothing);
 }
 
+// CMetricMap::boundingBox() is a virtual since MRPT 2.11.3: through the base
+// class there, through the map's own method before.
+TEST(MapIni, BoundingBoxIsTheGridsExtent)
+{
+	const auto maps = mapsFrom(kIni);
+	const auto map = maps.mapByClass<CEvidentialGridMap2D>();
+	ASSERT_TRUE(map);
+#if MRPT_EVIDENTIAL_MRPT_SINCE_2_11_3
+	const mrpt::maps::CMetricMap& asMetricMap = *map;
+	const auto box = asMetricMap.boundingBox();
+#else
+	const auto box = map->boundingBox();
+#endif
+	EXPECT_FLOAT_EQ(box.min.x, -5.0f);
+	EXPECT_FLOAT_EQ(box.max.x, 7.0f);
+	EXPECT_FLOAT_EQ(box.min.y, -3.0f);
+	EXPECT_FLOAT_EQ(box.max.y, 4.0f);
+	EXPECT_EQ(box.min.z, 0.0f);
+	EXPECT_EQ(box.max.z, 0.0f);
+
+	// The box follows the grid when it grows.
+	CEvidentialGridMap2D grown(-5, 7, -3, 4, 0.05);
+	grown.setSize(-20, 30, -10, 15, 0.05);
+	const auto after = grown.boundingBox();
+	EXPECT_FLOAT_EQ(after.min.x, -20.0f);
+	EXPECT_FLOAT_EQ(after.max.x, 30.0f);
+	EXPECT_FLOAT_EQ(after.min.y, -10.0f);
+	EXPECT_FLOAT_EQ(after.max.y, 15.0f);
+}
+
 TEST(MapIni, DefaultsWhenSectionsAreAbsent)
 {
 	const auto maps = mapsFrom("[Map]\nevidentialGrid_count=1\n");

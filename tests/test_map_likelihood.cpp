@@ -14,7 +14,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <iostream>
+#include <iterator>
 #include <limits>
 #include <random>
 #include <sstream>
@@ -559,7 +561,7 @@ TEST(LikelihoodRealData, MalagaScansScoreBestAtTheirPoses)
 	ASSERT_GT(simpleMap.size(), 50u);
 
 	CEvidentialGridMap2D map(-10, 10, -10, 10, 0.05);
-	map.loadFromProbabilisticPosesAndObservations(simpleMap);
+	map.loadFromSimpleMap(simpleMap);
 	ASSERT_GT(map.insertionCount(), 0u);
 	const auto counts = map.countDecisions();
 	ASSERT_GT(counts.occupied, 1000u) << map.asString();
@@ -568,11 +570,14 @@ TEST(LikelihoodRealData, MalagaScansScoreBestAtTheirPoses)
 	std::size_t checked = 0;
 	for (std::size_t k = 0; k < simpleMap.size(); k += 10)
 	{
-		const auto& [posePdf, frame] = simpleMap.get(k);
+		// Iterated, a keyframe has `pose` and `sf` in MRPT 2.5 and 2.14
+		// alike (get() returns a tuple in 2.5, a Keyframe in 2.14).
+		const auto& keyframe =
+			*std::next(simpleMap.begin(), static_cast<std::ptrdiff_t>(k));
 		const auto scan =
-			frame->getObservationByClass<CObservation2DRangeScan>();
+			keyframe.sf->getObservationByClass<CObservation2DRangeScan>();
 		if (!scan) continue;
-		const CPose2D pose(posePdf->getMeanVal());
+		const CPose2D pose(keyframe.pose->getMeanVal());
 		const double own = score(map, *scan, pose);
 		std::cout << "scan " << k << " at " << pose.asString()
 				  << ": own pose " << own;

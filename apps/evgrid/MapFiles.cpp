@@ -50,8 +50,7 @@ std::unique_ptr<CEvidentialGridMap2D> createMapFromConfig(
 		if (!definition) continue;
 		try
 		{
-			return std::unique_ptr<CEvidentialGridMap2D>(
-				CEvidentialGridMap2D::CreateFromMapDefinition(*definition));
+			return CEvidentialGridMap2D::fromDefinition(*definition);
 		}
 		catch (const std::exception& e)
 		{

@@ -49,6 +49,34 @@ run_stock() {
 	ok "$name ran in $((SECONDS - start))s"
 }
 
+# run_stock_without_plugin LOG SECONDS MAPCLASS COMMAND...: runs COMMAND,
+# whose .ini names MAPCLASS, without the plugin. MRPT before 2.11.3 skips a
+# map class nobody registered: COMMAND must exit with 0. Since, the map list
+# is rejected: COMMAND must fail with MRPT's error naming MAPCLASS.
+# E2E_MRPT_COMPAT (tests/e2e/mrpt_compat.cpp) tells which MRPT this is.
+# Prints the ok line: what MRPT did.
+run_stock_without_plugin() {
+	local log=$1 seconds=$2 class=$3
+	shift 3
+	local expected status=0 name
+	name=$(basename "$1")
+	expected=$("${E2E_MRPT_COMPAT:?E2E_MRPT_COMPAT is not set (tests/e2e/CMakeLists.txt sets it)}")
+	case "$expected" in
+	"unknown-maps: skipped")
+		run_stock "$log" "$seconds" "" "$@"
+		;;
+	"unknown-maps: rejected")
+		timeout "$seconds" "$@" </dev/null >"$log" 2>&1 || status=$?
+		[ "$status" -ne 124 ] || { show_log "$log"; fail "$name timed out after ${seconds}s"; }
+		[ "$status" -ne 0 ] || { show_log "$log"; fail "$name exited with 0 on an .ini naming the unregistered $class"; }
+		grep -qF "there is no such registered CMetricMap class '$class'" "$log" ||
+			{ show_log "$log"; fail "$name did not stop on the unregistered map class $class"; }
+		ok "$name stopped on the unregistered map class $class (exit $status)"
+		;;
+	*) fail "E2E_MRPT_COMPAT printed '$expected'" ;;
+	esac
+}
+
 # help_has PROGRAM TEXT...: fails unless PROGRAM --help mentions every TEXT.
 # The help is read whole first: grep -q on a pipe stops reading early, and
 # under pipefail the program's next write then fails with SIGPIPE.

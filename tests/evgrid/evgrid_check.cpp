@@ -43,6 +43,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <vector>
 #include <iostream>
@@ -218,9 +219,11 @@ int toSimplemap(const std::string& rawlog, const std::string& poses, const std::
 	std::size_t k = 0;
 	forEachFrame(rawlog, [&](const CPose2D&, const CSensoryFrame& sf) {
 		if (k >= path.size()) throw std::runtime_error(poses + ": fewer poses than frames");
+		// Shared pointers: MRPT 2.14 has no insert() that copies.
 		simplemap.insert(
-			mrpt::poses::CPose3DPDFGaussian(mrpt::poses::CPose3D(path[k++])),
-			sf);
+			std::make_shared<mrpt::poses::CPose3DPDFGaussian>(
+				mrpt::poses::CPose3D(path[k++])),
+			std::make_shared<CSensoryFrame>(sf));
 	});
 	mrpt::io::CFileGZOutputStream f(out);
 	mrpt::serialization::archiveFrom(f) << simplemap;

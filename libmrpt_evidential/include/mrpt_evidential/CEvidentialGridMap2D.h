@@ -4,10 +4,12 @@
 
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/core/Clock.h>
+#include <mrpt/math/TBoundingBox.h>
 #include <mrpt/math/TPoint3D.h>
 #include <mrpt/maps/CMetricMap.h>
 #include <mrpt_evidential/EnumNames.h>
 #include <mrpt_evidential/Motion.h>
+#include <mrpt_evidential/MrptCompat.h>
 #include <mrpt_evidential/algebra/combination.h>
 #include <mrpt_evidential/grid/EvidentialGridStorage.h>
 #include <mrpt_evidential/scan/CPolarSourceGrid.h>
@@ -263,6 +265,10 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	 * @{ */
 	/** True until an observation has been inserted. */
 	bool isEmpty() const override;
+	/** The grid's extent, [getXMin(), getXMax()] x [getYMin(), getYMax()] at
+	 * z = 0, as COccupancyGridMap2D gives its own (a CMetricMap virtual since
+	 * MRPT 2.11.3). */
+	mrpt::math::TBoundingBoxf boundingBox() const MRPT_EVIDENTIAL_OVERRIDE_SINCE_2_11_3;
 	/** Writes savePictures(`<prefix>_`), `<prefix>_info.txt` (geometry, options and
 	 * counts per decision) and `<prefix>.evgrid` (the serialized map), each
 	 * atomically. \throws std::runtime_error if a file cannot be written. */
@@ -471,6 +477,13 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	mrpt_evidential::CEvidentialGridMap2D::TInsertionOptions insertionOpts;
 	mrpt_evidential::CEvidentialGridMap2D::TLikelihoodOptions likelihoodOpts;
 	MAP_DEFINITION_END(CEvidentialGridMap2D)
+
+	/** The map a definition describes, as CreateFromMapDefinition() makes it
+	 * for MRPT's map registry, but owned by the caller alone (MRPT's factory
+	 * returns a raw pointer before MRPT 2.11.3, a shared one since).
+	 * \throws std::invalid_argument as setMaxCells() and setSize(). */
+	static std::unique_ptr<CEvidentialGridMap2D> fromDefinition(
+		const TMapDefinition& definition);
 
    private:
 	void internal_clear() override;

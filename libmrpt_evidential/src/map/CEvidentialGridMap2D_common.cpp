@@ -85,10 +85,16 @@ void CEvidentialGridMap2D::TMapDefinition::dumpToTextStream_map_specific(
 	likelihoodOpts.dumpToTextStream(out);
 }
 
-mrpt::maps::CMetricMap* CEvidentialGridMap2D::internal_CreateFromMapDefinition(
+compat::MapFactoryResult CEvidentialGridMap2D::internal_CreateFromMapDefinition(
 	const mrpt::maps::TMetricMapInitializer& def)
 {
-	const auto& d = dynamic_cast<const TMapDefinition&>(def);
+	return compat::toMapFactoryResult(
+		fromDefinition(dynamic_cast<const TMapDefinition&>(def)));
+}
+
+std::unique_ptr<CEvidentialGridMap2D> CEvidentialGridMap2D::fromDefinition(
+	const TMapDefinition& d)
+{
 	// The budget first: a grid larger than the default budget may be asked
 	// for together with a larger budget.
 	auto map = std::make_unique<CEvidentialGridMap2D>(
@@ -97,7 +103,7 @@ mrpt::maps::CMetricMap* CEvidentialGridMap2D::internal_CreateFromMapDefinition(
 	map->setSize(d.min_x, d.max_x, d.min_y, d.max_y, d.resolution);
 	map->insertionOptions = d.insertionOpts;
 	map->likelihoodOptions = d.likelihoodOpts;
-	return map.release();
+	return map;
 }
 
 CEvidentialGridMap2D::CWorkspace::CWorkspace()
@@ -156,6 +162,13 @@ void CEvidentialGridMap2D::internal_clear()
 }
 
 bool CEvidentialGridMap2D::isEmpty() const { return insertionCount() == 0; }
+
+mrpt::math::TBoundingBoxf CEvidentialGridMap2D::boundingBox() const
+{
+	return {
+		{static_cast<float>(getXMin()), static_cast<float>(getYMin()), 0.0f},
+		{static_cast<float>(getXMax()), static_cast<float>(getYMax()), 0.0f}};
+}
 
 Mass CEvidentialGridMap2D::getCellMassesByIndex(int cx, int cy) const
 {
