@@ -64,9 +64,18 @@ cp "$OUT" "$T/street.footprint.txt"
 awk -v s="$(share obstacle)" 'BEGIN { exit !(s >= 95) }' || fail "observations2map: $(share obstacle)% of obstacle cells occupied"
 awk -v s="$(share ground)" 'BEGIN { exit !(s <= 5) }' || fail "observations2map: $(share ground)% of ground cells occupied"
 
-# 5. A rotating scan has no elevations in MRPT 2.5.8: counted, not inserted.
-run 1 "$EVGRID" build -c "$EVGRID_INI" -i "$DATASETS/rot_scan_velodyne.rawlog" -o "$T/rot"
-contains "$ERR" "no scan was inserted"
+# 5. A rotating scan has no elevations: counted, not inserted. MRPT 2.11.4
+#    changed the class, and Debian 13's MRPT cannot read this file's version
+#    of it at all (rawlog-edit stops on it): evgrid then names the entry it
+#    cannot read. Either way no map is written.
+rot="$DATASETS/rot_scan_velodyne.rawlog"
+run 1 "$EVGRID" build -c "$EVGRID_INI" -i "$rot" -o "$T/rot"
+timeout 60 rawlog-edit --info -i "$rot" </dev/null >"$T/rot-info.txt" 2>&1 || true
+if grep -q "Found exception" "$T/rot-info.txt"; then
+  contains "$ERR" "$rot: entry 0"
+else
+  contains "$ERR" "no scan was inserted"
+fi
 [ ! -e "$T/rot/summary.txt" ] || fail "a failed run wrote $T/rot/summary.txt"
 
 echo "evgrid_clouds: OK"
