@@ -34,3 +34,18 @@ void* operator new(std::size_t size)
 {
 	std::free(p);
 }
+// The nothrow forms too: a program that mixes them with the replaced delete
+// (GoogleTest 1.15 does) must get its memory from the same malloc, or
+// AddressSanitizer reports the mismatch.
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept
+{
+	try
+	{
+		return ::operator new(size);
+	}
+	catch (const std::bad_alloc&)
+	{
+		return nullptr;
+	}
+}
+[[gnu::noinline]] void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
