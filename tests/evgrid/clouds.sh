@@ -64,18 +64,21 @@ cp "$OUT" "$T/street.footprint.txt"
 awk -v s="$(share obstacle)" 'BEGIN { exit !(s >= 95) }' || fail "observations2map: $(share obstacle)% of obstacle cells occupied"
 awk -v s="$(share ground)" 'BEGIN { exit !(s <= 5) }' || fail "observations2map: $(share ground)% of ground cells occupied"
 
-# 5. A rotating scan has no elevations: counted, not inserted. MRPT 2.11.4
-#    changed the class, and Debian 13's MRPT cannot read this file's version
-#    of it at all (rawlog-edit stops on it): evgrid then names the entry it
-#    cannot read. Either way no map is written.
+# 5. A rotating scan has no elevations in MRPT: counted, not inserted. One
+#    made with the MRPT at hand, beside a 2-D scan that is inserted.
+"$EVGRID_CHECK" rotating-scan "$T/rot.rawlog" || fail "cannot write a rotating scan"
+run 0 "$EVGRID" build -c "$EVGRID_INI" -i "$T/rot.rawlog" -o "$T/rot"
+contains "$T/rot/summary.txt" "other observations: 1 mrpt::obs::CObservationRotatingScan (not inserted)"
+contains "$T/rot/summary.txt" "scans: 1 2-D scans: 1 inserted"
+#    MRPT's own dataset, where this MRPT reads it: Debian 13's MRPT cannot read
+#    the version of the class that file holds (rawlog-edit stops on it), and
+#    allocates gigabytes on the way.
 rot="$DATASETS/rot_scan_velodyne.rawlog"
-run 1 "$EVGRID" build -c "$EVGRID_INI" -i "$rot" -o "$T/rot"
 timeout 60 rawlog-edit --info -i "$rot" </dev/null >"$T/rot-info.txt" 2>&1 || true
-if grep -q "Found exception" "$T/rot-info.txt"; then
-  contains "$ERR" "$rot: entry 0"
-else
+if ! grep -q "Found exception" "$T/rot-info.txt"; then
+  run 1 "$EVGRID" build -c "$EVGRID_INI" -i "$rot" -o "$T/rot-dataset"
   contains "$ERR" "no scan was inserted"
+  [ ! -e "$T/rot-dataset/summary.txt" ] || fail "a failed run wrote $T/rot-dataset/summary.txt"
 fi
-[ ! -e "$T/rot/summary.txt" ] || fail "a failed run wrote $T/rot/summary.txt"
 
 echo "evgrid_clouds: OK"

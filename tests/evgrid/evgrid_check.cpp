@@ -16,6 +16,10 @@
  *                                         -> OUT (gzip): a simplemap of the
  *                                            rawlog's sensory frames, frame k at
  *                                            line k of POSES ("time x y phi")
+ *   evgrid_check rotating-scan OUT        -> OUT (gzip): an observation-only rawlog
+ *                                            of one CObservationRotatingScan (16
+ *                                            rings, 360 firings, all at 5 m) and
+ *                                            one 2-D scan (181 beams at 2 m)
  *   evgrid_check footprint MAP FOOTPRINT  -> for each class of evgrid-simulate's
  *                                            footprint (ground, obstacle, low,
  *                                            overhang): "CLASS SEEN OCCUPIED_PCT",
@@ -32,6 +36,7 @@
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CObservationRotatingScan.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/maps/CSimpleMap.h>
 #include <mrpt/poses/CPose2D.h>
@@ -230,6 +235,26 @@ int toSimplemap(const std::string& rawlog, const std::string& poses, const std::
 	return 0;
 }
 
+int rotatingScan(const std::string& out)
+{
+	CObservationRotatingScan scan;
+	scan.sensorLabel = "LIDAR";
+	scan.timestamp = mrpt::Clock::fromDouble(1000.0);
+	scan.rowCount = 16;
+	scan.columnCount = 360;
+	scan.rangeResolution = 0.01;
+	scan.rangeImage.setConstant(scan.rowCount, scan.columnCount, 500);
+	CObservation2DRangeScan flat;
+	flat.sensorLabel = "LASER";
+	flat.timestamp = mrpt::Clock::fromDouble(1000.1);
+	flat.aperture = static_cast<float>(M_PI);
+	flat.resizeScan(181);
+	for (std::size_t i = 0; i < 181; ++i) flat.setScanRange(i, 2.0f), flat.setScanRangeValidity(i, true);
+	mrpt::io::CFileGZOutputStream f(out);
+	mrpt::serialization::archiveFrom(f) << scan << flat;
+	return 0;
+}
+
 /** The cells of a footprint line's items ("I" or "I-J"). */
 std::vector<long> footprintCells(std::istringstream& items)
 {
@@ -299,6 +324,7 @@ int main(int argc, char** argv)
 		if (what == "video" && argc == 3) return video(argv[2]);
 		if (what == "cells" && argc == 3) return cells(argv[2]);
 		if (what == "to-simplemap" && argc == 5) return toSimplemap(argv[2], argv[3], argv[4]);
+		if (what == "rotating-scan" && argc == 3) return rotatingScan(argv[2]);
 		if (what == "footprint" && argc == 4) return footprint(argv[2], argv[3]);
 		if (what == "odometry-path" && argc == 4)
 			return odometryPath(argv[2], argv[3]);
