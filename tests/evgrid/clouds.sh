@@ -70,12 +70,14 @@ awk -v s="$(share ground)" 'BEGIN { exit !(s <= 5) }' || fail "observations2map:
 run 0 "$EVGRID" build -c "$EVGRID_INI" -i "$T/rot.rawlog" -o "$T/rot"
 contains "$T/rot/summary.txt" "other observations: 1 mrpt::obs::CObservationRotatingScan (not inserted)"
 contains "$T/rot/summary.txt" "scans: 1 2-D scans: 1 inserted"
-#    MRPT's own dataset, where this MRPT reads it: Debian 13's MRPT cannot read
-#    the version of the class that file holds (rawlog-edit stops on it), and
-#    allocates gigabytes on the way.
+#    MRPT's own dataset, with an MRPT that reads it: since 2.11.4 (the class
+#    changed) MRPT cannot read the version that file holds (rawlog-edit of
+#    Debian 13 stops on it, after allocating gigabytes).
 rot="$DATASETS/rot_scan_velodyne.rawlog"
-timeout 60 rawlog-edit --info -i "$rot" </dev/null >"$T/rot-info.txt" 2>&1 || true
-if ! grep -q "Found exception" "$T/rot-info.txt"; then
+mrpt=$("$EVGRID_CHECK" mrpt-version) || fail "cannot tell MRPT's version"
+if [ "$(printf '%s\n2.11.4\n' "$mrpt" | sort -V | head -n 1)" = 2.11.4 ]; then
+  echo "MRPT $mrpt cannot read $rot: not fed to evgrid"
+else
   run 1 "$EVGRID" build -c "$EVGRID_INI" -i "$rot" -o "$T/rot-dataset"
   contains "$ERR" "no scan was inserted"
   [ ! -e "$T/rot-dataset/summary.txt" ] || fail "a failed run wrote $T/rot-dataset/summary.txt"

@@ -20,6 +20,7 @@
  *                                            of one CObservationRotatingScan (16
  *                                            rings, 360 firings, all at 5 m) and
  *                                            one 2-D scan (181 beams at 2 m)
+ *   evgrid_check mrpt-version             -> MRPT's version, e.g. "2.5.8"
  *   evgrid_check footprint MAP FOOTPRINT  -> for each class of evgrid-simulate's
  *                                            footprint (ground, obstacle, low,
  *                                            overhang): "CLASS SEEN OCCUPIED_PCT",
@@ -28,6 +29,7 @@
  * Exit code 0 on success, 1 with a message otherwise. */
 
 #include <mrpt/core/Clock.h>
+#include <mrpt/version.h>
 #include <mrpt/img/CImage.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CFileGZOutputStream.h>
@@ -325,6 +327,8 @@ int main(int argc, char** argv)
 		if (what == "cells" && argc == 3) return cells(argv[2]);
 		if (what == "to-simplemap" && argc == 5) return toSimplemap(argv[2], argv[3], argv[4]);
 		if (what == "rotating-scan" && argc == 3) return rotatingScan(argv[2]);
+		if (what == "mrpt-version" && argc == 2)
+			return std::printf("%d.%d.%d\n", MRPT_VERSION >> 8, (MRPT_VERSION >> 4) & 0xF, MRPT_VERSION & 0xF) < 0;
 		if (what == "footprint" && argc == 4) return footprint(argv[2], argv[3]);
 		if (what == "odometry-path" && argc == 4)
 			return odometryPath(argv[2], argv[3]);
