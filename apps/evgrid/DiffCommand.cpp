@@ -3,11 +3,11 @@
 
 #include <mrpt/img/CImage.h>
 
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <stdexcept>
 
+#include <mrpt_evidential/support/AtomicFile.h>
 #include <mrpt_evidential/support/NumberText.h>
 #include "COutputFolder.h"
 #include "CommandLine.h"
@@ -15,6 +15,7 @@
 #include "MapFiles.h"
 
 using mrpt_evidential::CEvidentialGridMap2D;
+using mrpt_evidential::detail::writeFileAtomically;
 
 namespace evgrid
 {
@@ -27,15 +28,14 @@ const std::string kName = "evgrid diff";
 void writePoints(
 	const std::string& path, const CEvidentialGridMap2D& map, const std::vector<std::size_t>& cells)
 {
-	std::ofstream os(path);
-	const auto& g = map.geometry();
-	const auto sx = static_cast<std::size_t>(g.sizeX);
-	os << std::fixed << std::setprecision(4);
-	for (const std::size_t idx : cells)
-		os << g.cellCenterX(static_cast<int>(idx % sx)) << ' '
-		   << g.cellCenterY(static_cast<int>(idx / sx)) << '\n';
-	os.close();
-	if (!os) throw std::runtime_error(path + ": cannot write");
+	writeFileAtomically(path, [&](std::ostream& os) {
+		const auto& g = map.geometry();
+		const auto sx = static_cast<std::size_t>(g.sizeX);
+		os << std::fixed << std::setprecision(4);
+		for (const std::size_t idx : cells)
+			os << g.cellCenterX(static_cast<int>(idx % sx)) << ' '
+			   << g.cellCenterY(static_cast<int>(idx / sx)) << '\n';
+	});
 }
 }  // namespace
 
@@ -102,16 +102,13 @@ int runDiff(int argc, char** argv, int first)
 		throw std::runtime_error(out.staged("changes.png") + ": cannot write");
 	writePoints(out.staged("appeared.txt"), *later, changes.appeared);
 	writePoints(out.staged("disappeared.txt"), *later, changes.disappeared);
-	{
-		std::ofstream os(out.staged("summary.txt"));
+	writeFileAtomically(out.staged("summary.txt"), [&](std::ostream& os) {
 		os << kName << " summary\n\nearlier: " << earlierPath
 		   << "\nlater: " << laterPath << "\nmin conflict: " << minConflict
 		   << ", clearance: " << clearance << " m\ncells both runs saw: " << changes.compared
 		   << "\nappeared: " << changes.appeared.size()
 		   << " cells\ndisappeared: " << changes.disappeared.size() << " cells\n";
-		os.close();
-		if (!os) throw std::runtime_error(out.staged("summary.txt") + ": cannot write the summary");
-	}
+	});
 	out.commit({"changes.png", "appeared.txt", "disappeared.txt", "summary.txt"});
 	if (!argQuiet.getValue())
 		std::cout << kName << ": " << changes.compared << " cells seen by both runs; appeared "

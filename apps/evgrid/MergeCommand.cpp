@@ -2,11 +2,11 @@
 
 #include <mrpt/typemeta/TEnumType.h>
 
-#include <fstream>
 #include <iostream>
 #include <stdexcept>
 #include <vector>
 
+#include <mrpt_evidential/support/AtomicFile.h>
 #include <mrpt_evidential/support/NumberText.h>
 #include "COutputFolder.h"
 #include "CommandLine.h"
@@ -42,19 +42,18 @@ void writeSummary(
 	const std::vector<CEvidentialGridMap2D::Ptr>& maps, FusionRule rule,
 	ConflictHandling handling, const CEvidentialGridMap2D& merged)
 {
-	std::ofstream os(path);
-	os << kName << " summary\n\ninputs:\n";
-	for (std::size_t i = 0; i < maps.size(); ++i)
-		os << "  " << inputs[i] << ": " << maps[i]->getSizeX() << " x " << maps[i]->getSizeY()
-		   << " cells, " << maps[i]->insertionCount() << " insertions, latest time "
-		   << mrpt_evidential::detail::shortestText(maps[i]->latestTime()) << " s\n";
-	os << "rule: " << mrpt::typemeta::TEnumType<FusionRule>::value2name(rule)
-	   << ", conflict handling: "
-	   << mrpt::typemeta::TEnumType<ConflictHandling>::value2name(handling) << "\n\nmap:\n"
-	   << merged.geometryText("  ");
-	printDecisionCounts(os, merged.countDecisions(), merged.geometry().cellCount());
-	os.close();
-	if (!os) throw std::runtime_error(path + ": cannot write the summary");
+	mrpt_evidential::detail::writeFileAtomically(path, [&](std::ostream& os) {
+		os << kName << " summary\n\ninputs:\n";
+		for (std::size_t i = 0; i < maps.size(); ++i)
+			os << "  " << inputs[i] << ": " << maps[i]->getSizeX() << " x " << maps[i]->getSizeY()
+			   << " cells, " << maps[i]->insertionCount() << " insertions, latest time "
+			   << mrpt_evidential::detail::shortestText(maps[i]->latestTime()) << " s\n";
+		os << "rule: " << mrpt::typemeta::TEnumType<FusionRule>::value2name(rule)
+		   << ", conflict handling: "
+		   << mrpt::typemeta::TEnumType<ConflictHandling>::value2name(handling) << "\n\nmap:\n"
+		   << merged.geometryText("  ");
+		printDecisionCounts(os, merged.countDecisions(), merged.geometry().cellCount());
+	});
 }
 }  // namespace
 
