@@ -31,7 +31,9 @@ packages=(
   libmrpt-tclap-dev zlib1g-dev
   mrpt-apps mrpt-common
   libeigen3-dev libopencv-dev libgtest-dev libbenchmark-dev
-  xvfb xauth x11-utils imagemagick
+  # the GUI tests: a virtual display, driven with xdotool, screenshots read
+  # with ImageMagick
+  xvfb xauth x11-utils xdotool imagemagick
   # the fleet recipe (doc/recipes/fleet.md)
   parallel
   # the Debian packages (scripts/build-deb.sh): dpkg-shlibdeps, and file,
@@ -75,10 +77,12 @@ demo() {
     -p "$icp/out/log_estimated_path.txt" -o "$out" </dev/null
   echo
   echo "Demo done. The pictures of the map are in $out:"
-  echo "  $out/evidential.png  (red occupied, green free, blue unknown)"
+  echo "  $out/map.png         (light free, dark occupied, grey unknown, orange appeared, teal left)"
+  echo "  $out/evidential.png  (the masses: red occupied, green free, blue unknown)"
   echo "  $out/betp.png        (probability of occupancy: white free, black occupied)"
   echo "  $out/conflict.png    (conflict kept in the cells: black unless conflictHandling=Keep)"
-  echo "  $out/motion.png      (the motion layer: orange appeared, blue left, over the static map)"
+  echo "  $out/motion.png      (the motion layer: orange appeared, teal left, over the static map)"
+  echo "  $out/map.3Dscene     (the map and the path in 3-D: SceneViewer3D $out/map.3Dscene)"
   echo "$out/summary.txt describes the run; doc/evgrid.md explains evgrid."
 }
 

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <new>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,10 @@ CEvidentialGridMap2D makeMap(double resolution = 0.1)
 	map.likelihoodOptions.sigma = 0.2;
 	map.likelihoodOptions.decimation = 3;
 	map.likelihoodOptions.unknownAsNeutral = false;
+	map.renderingOptions.style = RenderStyle::Masses;
+	map.renderingOptions.appearedColor = mrpt::img::TColor(1, 2, 3);
+	map.renderingOptions.showUnknown = true;
+	map.renderingOptions.height = 0.25;
 	map.genericMapParams.enableObservationLikelihood = false;
 	map.insertObservation(
 		test::scanByIndex(
@@ -122,6 +127,11 @@ void expectSameMap(const CEvidentialGridMap2D& a, const CEvidentialGridMap2D& b)
 	EXPECT_EQ(la.decimation, lb.decimation);
 	EXPECT_EQ(la.unknownAsNeutral, lb.unknownAsNeutral);
 
+	std::ostringstream ra, rb;
+	a.renderingOptions.dumpToTextStream(ra);
+	b.renderingOptions.dumpToTextStream(rb);
+	EXPECT_EQ(ra.str(), rb.str());
+
 	EXPECT_EQ(
 		a.genericMapParams.enableSaveAs3DObject,
 		b.genericMapParams.enableSaveAs3DObject);
@@ -160,15 +170,33 @@ void putLE(std::vector<std::uint8_t>& bytes, std::size_t at, std::uint64_t v, in
 	for (int i = 0; i < n; ++i) bytes[at + i] = static_cast<std::uint8_t>(v >> (8 * i));
 }
 
-/** The bytes version 1 would have written for `map` (whose stamp table fits
- * version 1): today's layout without freeMargin, the motion options and
- * keepsConflict, and stamps without their impact flag. */
 /** groundRemoval, minObstacleHeight, maxObstacleHeight, groundReturns. */
 constexpr std::size_t kCloudOptionBytes = 1 + 8 + 8 + 1;
 
-std::vector<std::uint8_t> asVersion1(const CEvidentialGridMap2D& map)
+/** The map as version 3 wrote it: no rendering options after the
+ * likelihood options (offsets of the layout in the io source). */
+std::vector<std::uint8_t> asVersion3(const CEvidentialGridMap2D& map)
 {
 	std::vector<std::uint8_t> bytes = test::serialize(map);
+	const std::size_t header = 1 + (bytes[0] & 0x7F) + 1;
+	bytes[header - 1] = 3;
+	const std::size_t insertionBytes = 1 + 8 + 8 + 8 + 1 + 8 + 8 + 1 + 8 + 1 + 8 + 8 + 1 +
+		8 + 24 + kCloudOptionBytes;
+	const std::size_t likelihoodBytes = 6 * 8 + 4 + 1;
+	const std::size_t rendering = header + 32 + 8 + insertionBytes + likelihoodBytes;
+	const std::size_t renderingBytes = 1 + 6 * 3 + 5 + 8;
+	bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(rendering),
+				bytes.begin() + static_cast<std::ptrdiff_t>(rendering + renderingBytes));
+	reseal(bytes);
+	return bytes;
+}
+
+/** The bytes version 1 would have written for `map` (whose stamp table fits
+ * version 1): today's layout without freeMargin, the motion options and
+ * keepsConflict, and stamps without their impact flag. */
+std::vector<std::uint8_t> asVersion1(const CEvidentialGridMap2D& map)
+{
+	std::vector<std::uint8_t> bytes = asVersion3(map);
 	const std::size_t header = 1 + (bytes[0] & 0x7F) + 1;
 	bytes[header - 1] = 1;
 	const std::size_t cells = map.geometry().cellCount();
@@ -197,7 +225,7 @@ std::vector<std::uint8_t> asVersion1(const CEvidentialGridMap2D& map)
  * options. */
 std::vector<std::uint8_t> asVersion2(const CEvidentialGridMap2D& map)
 {
-	std::vector<std::uint8_t> bytes = test::serialize(map);
+	std::vector<std::uint8_t> bytes = asVersion3(map);
 	const std::size_t header = 1 + (bytes[0] & 0x7F) + 1;
 	bytes[header - 1] = 2;
 	const std::size_t insertion = header + 32 + 8;
@@ -352,6 +380,18 @@ TEST(MapIO, EveryTruncationIsDetected)
 	EXPECT_EQ(end.report, "");
 }
 
+TEST(MapIO, VersionThreeFilesStillLoad)
+{
+	// Version 3 had no rendering options: they read as the defaults.
+	CEvidentialGridMap2D original = conflictingMap();
+	original.renderingOptions.style = RenderStyle::Masses;
+	original.renderingOptions.height = 2.0;
+	CEvidentialGridMap2D back;
+	deserialize(asVersion3(original), back);
+	original.renderingOptions = CEvidentialGridMap2D::TRenderingOptions();
+	expectSameMap(original, back);
+}
+
 TEST(MapIO, VersionTwoFilesStillLoad)
 {
 	// Version 2 had no cloud options: they read as the defaults, and the
@@ -469,8 +509,8 @@ TEST(MapIO, UnknownVersionIsRejected)
 	auto bytes = serialize(makeMap(0.3));
 	// MRPT's object header: 0x80 | name length, the class name, the version.
 	const std::size_t versionPos = 1 + (bytes[0] & 0x7F);
-	ASSERT_EQ(bytes[versionPos], 3);
-	for (const std::uint8_t v : {4, 5, 0x7F, 0xFF})
+	ASSERT_EQ(bytes[versionPos], 4);
+	for (const std::uint8_t v : {5, 6, 0x7F, 0xFF})
 	{
 		bytes[versionPos] = v;
 		CEvidentialGridMap2D target;

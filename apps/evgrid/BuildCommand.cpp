@@ -83,7 +83,9 @@ std::optional<int> parseOptions(
 		"CObservationVelodyneScan, CObservation3DRangeScan; other observations "
 		"are counted, not inserted). It writes "
 		"into the output folder: map.evgrid (the serialized map), "
-		"evidential.png, betp.png, conflict.png and summary.txt; with --every, "
+		"map.3Dscene (the map and the path, for SceneViewer3D), the pictures "
+		"map.png, evidential.png, betp.png, conflict.png, motion.png and "
+		"summary.txt; with --every, "
 		"frames/; with --animation, growth.avi. A failed run leaves the folder "
 		"as it was. See doc/evgrid.md.",
 		' ', EVGRID_VERSION);
@@ -94,7 +96,8 @@ std::optional<int> parseOptions(
 		25.0, "FPS", cmd);
 	TCLAP::ValueArg<std::string> argAnimationSize(
 		"", "animation-size",
-		"Frame size of growth.avi in pixels; each picture is scaled to fit. "
+		"Frame size of growth.avi in pixels; the map is scaled to fit above "
+		"its legend. "
 		"Default: 720x720.",
 		false, "720x720", "WxH", cmd);
 	TCLAP::ValueArg<int> argAnimationEvery(
@@ -103,11 +106,11 @@ std::optional<int> parseOptions(
 		"N", cmd);
 	TCLAP::SwitchArg argAnimation(
 		"", "animation",
-		"Also write growth.avi (MJPG): the evidential picture as the map grows.",
+		"Also write growth.avi (MJPG): map.png as the map grows.",
 		cmd, false);
 	TCLAP::ValueArg<int> argEvery(
 		"", "every",
-		"Also write frames/frame_NNNNNN_evidential.png every N inserted scans "
+		"Also write frames/frame_NNNNNN_map.png every N inserted scans "
 		"(NNNNNN = scans inserted so far). The frames/ folder of an earlier "
 		"run is replaced as a whole.",
 		false, 0, "N", cmd);
@@ -188,6 +191,7 @@ class CScanInserter
 			return;
 		}
 		++counts.inserted;
+		m_path.emplace_back(pose->x(), pose->y(), pose->z());
 		m_growth.afterInsertion(m_map, inserted());
 	}
 
@@ -196,6 +200,8 @@ class CScanInserter
 	std::size_t inserted() const { return m_scans.inserted + m_clouds.inserted; }
 	/** Seconds spent in the map's insertion. */
 	double seconds() const { return m_seconds; }
+	/** The robot's position at each inserted observation. */
+	const std::vector<mrpt::math::TPoint3D>& path() const { return m_path; }
 
    private:
 	CEvidentialGridMap2D& m_map;
@@ -203,6 +209,7 @@ class CScanInserter
 	CGrowthRecorder& m_growth;
 	TScanCounts m_scans, m_clouds;
 	double m_seconds = 0;
+	std::vector<mrpt::math::TPoint3D> m_path;
 };
 
 /** Writes the map, its pictures and summary.txt into the staging folder,
@@ -216,6 +223,7 @@ void writeResults(
 		CScopedTimer t(run.times.writing);
 		saveMap(map, out.staged("map.evgrid"));
 		savePicturesIn(map, out.stagingFolder());
+		map.saveAsScene(out.staged(kSceneName), run.path);
 	}
 	run.times.total = secondsSince(start);
 	run.decisions = map.countDecisions();
@@ -227,7 +235,7 @@ void writeResults(
 		if (!f) throw std::runtime_error(path + ": cannot write the summary");
 	}
 	// summary.txt last: it marks a complete run.
-	std::vector<std::string> results{"map.evgrid"};
+	std::vector<std::string> results{"map.evgrid", kSceneName};
 	for (const char* name : CEvidentialGridMap2D::pictureNames())
 		results.emplace_back(name);
 	results.insert(results.end(), {"frames", "growth.avi", "summary.txt"});
@@ -275,6 +283,7 @@ void build(const TBuildOptions& options, SteadyClock::time_point start)
 	run.times.reading = input.readingSeconds();
 	run.times.insertion = inserter.seconds();
 	run.times.writing = growth.writingSeconds();
+	run.path = inserter.path();
 	writeResults(options, run, *map, out, start);
 
 	if (!options.quiet) printConsoleSummary(std::cout, run, *map, out);

@@ -10,6 +10,8 @@ namespace evgrid
 {
 /** What messages and the summary call the subcommand. */
 constexpr const char* kBuildName = "evgrid build";
+/** The scene evgrid build writes beside the map: the map and the path. */
+constexpr const char* kSceneName = "map.3Dscene";
 
 struct TBuildOptions
 {

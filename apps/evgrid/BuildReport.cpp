@@ -161,7 +161,7 @@ void printConsoleSummary(
 		os << separator << out.final(name);
 		separator = ", ";
 	}
-	os << "\nsummary: " << out.final("summary.txt") << "\n";
+	os << "\nscene: " << out.final(kSceneName) << "\nsummary: " << out.final("summary.txt") << "\n";
 }
 
 }  // namespace evgrid

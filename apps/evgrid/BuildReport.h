@@ -2,11 +2,13 @@
  * console. */
 #pragma once
 
+#include <mrpt/math/TPoint3D.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 
 #include <cstddef>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "BuildOptions.h"
 #include "CInputWalker.h"
@@ -47,6 +49,8 @@ struct TBuildRecord
 	std::size_t inserted() const { return scans.inserted + clouds.inserted; }
 	std::size_t frames = 0, animationFrames = 0;
 	TBuildTimes times;
+	/** The robot's position at each inserted observation. */
+	std::vector<mrpt::math::TPoint3D> path;
 	mrpt_evidential::CEvidentialGridMap2D::TDecisionCounts decisions;
 };
 

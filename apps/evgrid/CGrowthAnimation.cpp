@@ -4,9 +4,7 @@
 
 #include <mrpt/img/CImage.h>
 
-#include <algorithm>
 #include <filesystem>
-#include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
 namespace evgrid
@@ -23,24 +21,12 @@ CGrowthAnimation::CGrowthAnimation(
 			path + ": OpenCV's MJPG writer cannot create the animation");
 }
 
-void CGrowthAnimation::add(const mrpt::img::CImage& picture)
+void CGrowthAnimation::add(const mrpt::img::CImage& frame)
 {
-	const cv::Mat& src = picture.asCvMatRef();
-	cv::Mat canvas(m_size, CV_8UC3, cv::Scalar(64, 64, 64));
-	const double scale = std::min(
-		static_cast<double>(m_size.width) / src.cols,
-		static_cast<double>(m_size.height) / src.rows);
-	const cv::Size fitted(
-		std::clamp(static_cast<int>(src.cols * scale), 1, m_size.width),
-		std::clamp(static_cast<int>(src.rows * scale), 1, m_size.height));
-	cv::Mat roi = canvas(cv::Rect(
-		(m_size.width - fitted.width) / 2, (m_size.height - fitted.height) / 2,
-		fitted.width, fitted.height));
-	// Averaging when shrinking keeps thin walls visible; blocks when
-	// enlarging keep cells sharp.
-	cv::resize(
-		src, roi, fitted, 0, 0, scale < 1.0 ? cv::INTER_AREA : cv::INTER_NEAREST);
-	m_writer.write(canvas);
+	const cv::Mat& src = frame.asCvMatRef();
+	if (src.cols != m_size.width || src.rows != m_size.height || src.type() != CV_8UC3)
+		throw std::logic_error("CGrowthAnimation: a frame of the wrong size or type");
+	m_writer.write(src);
 	++m_frames;
 }
 

@@ -13,17 +13,20 @@ class CImage;
 
 namespace evgrid
 {
-/** An MJPG AVI of evidential pictures. Video frames have one size while the
- * map grows, so each picture is scaled to fit a fixed canvas (aspect kept,
- * the margin dark grey: it shows where the map ends). OpenCV's own MJPG
- * writer is used, which needs no codec library. */
+/** An MJPG AVI of the map's pictures. Video frames have one size while the
+ * map grows: the map makes each at that size
+ * (CEvidentialGridMap2D::getAsPicture). OpenCV's own MJPG writer is used,
+ * which needs no codec library. */
 class CGrowthAnimation
 {
    public:
 	/** \throws std::runtime_error naming `path` if the writer cannot open. */
 	CGrowthAnimation(
 		const std::string& path, int width, int height, double framesPerSecond);
-	void add(const mrpt::img::CImage& picture);
+	/** \throws std::logic_error if the frame is not width x height RGB. */
+	void add(const mrpt::img::CImage& frame);
+	int width() const { return m_size.width; }
+	int height() const { return m_size.height; }
 	/** Finishes the file. \throws std::runtime_error if nothing was written. */
 	void close();
 

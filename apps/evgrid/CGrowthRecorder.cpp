@@ -36,30 +36,27 @@ void CGrowthRecorder::afterInsertion(
 
 	CScopedTimer t(m_writingSeconds);
 	using Map = mrpt_evidential::CEvidentialGridMap2D;
-	mrpt::img::CImage evidential, motion;
-	map.getAsEvidentialImage(evidential);
-	map.getAsMotionImage(motion);
+	// map.png: the static map with what moved (or the conflict of a map that
+	// keeps it), as the 3-D view draws it.
+	constexpr std::size_t kMapPicture = 0;
+	mrpt::img::CImage picture;
 	if (frame)
 	{
 		const std::string folder = m_out.staged("frames");
 		std::filesystem::create_directories(folder);
-		for (const auto& [picture, name] :
-			 {std::pair{&evidential, Map::pictureNames()[0]},
-			  std::pair{&motion, Map::pictureNames()[3]}})
-		{
-			char file[64];
-			std::snprintf(file, sizeof(file), "frame_%06zu_%s", inserted, name);
-			const std::string path = folder + "/" + file;
-			if (!picture->saveToFile(path))
-				throw std::runtime_error(path + ": cannot write the picture");
-		}
+		map.getAsPicture(kMapPicture, picture);
+		char file[64];
+		std::snprintf(
+			file, sizeof(file), "frame_%06zu_%s", inserted, Map::pictureNames()[kMapPicture]);
+		const std::string path = folder + "/" + file;
+		if (!picture.saveToFile(path))
+			throw std::runtime_error(path + ": cannot write the picture");
 		++m_frames;
 	}
 	if (video)
 	{
-		// Moving things as they move; a map that keeps conflict has no motion
-		// layer, and its conflict shows in the evidential colours.
-		m_animation->add(map.storage().keepsConflict() ? evidential : motion);
+		map.getAsPicture(kMapPicture, picture, true, m_animation->width(), m_animation->height());
+		m_animation->add(picture);
 		++m_animationFrames;
 	}
 }

@@ -27,8 +27,8 @@ struct TGrowthOptions
 	double animationFps = 25.0;
 };
 
-/** Writes, into the output folder's staging area, the evidential picture
- * of the map as it grows: frames/frame_NNNNNN_evidential.png (NNNNNN = scans
+/** Writes, into the output folder's staging area, the map's picture (map.png,
+ * with its legend) as it grows: frames/frame_NNNNNN_map.png (NNNNNN = scans
  * inserted so far) and the frames of growth.avi. */
 class CGrowthRecorder
 {

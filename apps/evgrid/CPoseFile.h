@@ -44,6 +44,8 @@ class CPoseFile
 	Kind kind() const { return m_kind; }
 	std::size_t size() const { return m_keys.size(); }
 	const std::string& path() const { return m_path; }
+	/** Every pose, in the file's order. */
+	const std::vector<mrpt::math::TPose2D>& poses() const { return m_poses; }
 
 	/** Pose at time t (Time files); nullopt if none within tolerance. */
 	std::optional<mrpt::math::TPose2D> atTime(double t, double tolerance) const;

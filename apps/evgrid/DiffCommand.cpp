@@ -46,7 +46,7 @@ int runDiff(int argc, char** argv, int first)
 		"the cells both runs saw where something appeared (free in EARLIER, "
 		"occupied in LATER) or disappeared, ignoring changes next to what "
 		"stands in both (walls seen with two runs' pose errors). Writes "
-		"changes.png (LATER in grey, appeared orange, disappeared blue), "
+		"changes.png (LATER in grey, appeared orange, disappeared teal, with a legend), "
 		"appeared.txt and disappeared.txt (x y of each cell's centre, one per "
 		"line) and summary.txt into the output folder; a failed run leaves "
 		"the folder as it was. The maps must have the same resolution and "
@@ -97,7 +97,7 @@ int runDiff(int argc, char** argv, int first)
 	}
 
 	mrpt::img::CImage img;
-	later->getAsChangesImage(changes, img);
+	later->getAsChangesImage(changes, img, true);
 	if (!img.saveToFile(out.staged("changes.png")))
 		throw std::runtime_error(out.staged("changes.png") + ": cannot write");
 	writePoints(out.staged("appeared.txt"), *later, changes.appeared);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <mrpt_evidential/support/AtomicFile.h>
+#include "CPoseFile.h"
 #include "CommandLine.h"
 #include "Commands.h"
 #include "MapFiles.h"
@@ -44,7 +45,7 @@ int runExport(int argc, char** argv, int first)
 {
 	TCLAP::CmdLine cmd(
 		"Writes a saved map (map.evgrid) in other formats; give at least one "
-		"of --png, --gridmap, --ros. Each file is written under a temporary "
+		"of --png, --gridmap, --ros, --scene. Each file is written under a temporary "
 		"name and renamed, so a failure leaves the previous one in place. See "
 		"doc/evgrid.md.",
 		' ', EVGRID_VERSION);
@@ -60,10 +61,24 @@ int runExport(int argc, char** argv, int first)
 		"MRPT occupancy grid (COccupancyGridMap2D, gzip-compressed, as "
 		"pf-localization's map_file reads it); cell occupancy = BetP.",
 		false, "", "FILE", cmd);
+	TCLAP::ValueArg<std::string> argPath(
+		"", "path",
+		"With --scene: the robot's path to draw over the map, a text file of "
+		"lines `key x y phi` (icp-slam's log_estimated_path.txt, a ground "
+		"truth file).",
+		false, "", "FILE", cmd);
+	TCLAP::ValueArg<std::string> argScene(
+		"", "scene",
+		"A scene for MRPT's SceneViewer3D (FILE.3Dscene): the map as its 3-D "
+		"view draws it (its renderOpts), and the --path if given.",
+		false, "", "FILE", cmd);
+	TCLAP::SwitchArg argBare(
+		"", "bare", "With --png: the pictures without their legend strip.", cmd, false);
 	TCLAP::ValueArg<std::string> argPng(
 		"", "png",
-		"Folder (created if missing) for evidential.png, betp.png and "
-		"conflict.png, one pixel per cell, north up.",
+		"Folder (created if missing) for map.png, evidential.png, betp.png, "
+		"conflict.png and motion.png: one pixel per cell, north up, above a "
+		"legend and a scale bar.",
 		false, "", "DIR", cmd);
 	TCLAP::UnlabeledValueArg<std::string> argMap(
 		"map", "Required. The saved map (.evgrid, plain or gzip-compressed).",
@@ -72,21 +87,29 @@ int runExport(int argc, char** argv, int first)
 	if (const auto exitCode = parse(cmd, kName, argc, argv, first))
 		return *exitCode;
 	requireMapFile(argMap.getValue());
-	if (!argPng.isSet() && !argGridmap.isSet() && !argRos.isSet())
-		throw UsageError("nothing to do: give --png, --gridmap and/or --ros");
-	for (auto* arg : {&argPng, &argGridmap, &argRos})
+	if (!argPng.isSet() && !argGridmap.isSet() && !argRos.isSet() && !argScene.isSet())
+		throw UsageError("nothing to do: give --png, --gridmap, --ros and/or --scene");
+	for (auto* arg : {&argPng, &argGridmap, &argRos, &argScene, &argPath})
 		if (arg->isSet() && arg->getValue().empty())
 			throw UsageError("--" + arg->getName() + " needs a non-empty value");
+	if (argPath.isSet() && !argScene.isSet()) throw UsageError("--path needs --scene");
+	if (argBare.isSet() && !argPng.isSet()) throw UsageError("--bare needs --png");
 
 	const auto map = loadMap(argMap.getValue());
-	for (auto* arg : {&argGridmap, &argRos})
+	std::vector<mrpt::math::TPoint3D> path;
+	if (argPath.isSet())
+	{
+		const CPoseFile poses = CPoseFile::load(argPath.getValue(), CPoseFile::Kind::Auto);
+		for (const auto& p : poses.poses()) path.emplace_back(p.x, p.y, 0.0);
+	}
+	for (auto* arg : {&argGridmap, &argRos, &argScene})
 		if (arg->isSet())
 			createFolder(
 				std::filesystem::path(arg->getValue()).parent_path().string());
 	std::vector<std::string> written;
 	if (argPng.isSet())
-		for (const auto& path : savePicturesIn(*map, argPng.getValue()))
-			written.push_back(path);
+		for (const auto& file : savePicturesIn(*map, argPng.getValue(), !argBare.getValue()))
+			written.push_back(file);
 	if (argGridmap.isSet())
 	{
 		writeGridmap(*map, argGridmap.getValue());
@@ -97,6 +120,11 @@ int runExport(int argc, char** argv, int first)
 		map->saveAsROSMap(argRos.getValue());
 		written.push_back(argRos.getValue() + ".pgm");
 		written.push_back(argRos.getValue() + ".yaml");
+	}
+	if (argScene.isSet())
+	{
+		map->saveAsScene(argScene.getValue(), path);
+		written.push_back(argScene.getValue());
 	}
 	if (!argQuiet.getValue())
 		for (const auto& path : written) std::cout << "wrote " << path << "\n";

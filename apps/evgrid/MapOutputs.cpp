@@ -40,13 +40,13 @@ void checkOutputFile(const std::string& path)
 }
 
 std::vector<std::string> savePicturesIn(
-	const CEvidentialGridMap2D& map, const std::string& dir)
+	const CEvidentialGridMap2D& map, const std::string& dir, bool withLegend)
 {
 	createFolder(dir);
 	// Appending an empty name gives the folder with exactly one trailing
 	// separator, whether `dir` had one or not.
 	const std::string prefix = (std::filesystem::path(dir) / "").string();
-	map.savePictures(prefix);
+	map.savePictures(prefix, withLegend);
 	std::vector<std::string> written;
 	for (const char* name : CEvidentialGridMap2D::pictureNames())
 		written.push_back(prefix + name);

@@ -20,11 +20,13 @@ void createFolder(const std::string& dir);
 void checkOutputFile(const std::string& path);
 
 /** Writes the map's pictures (CEvidentialGridMap2D::pictureNames()) into
- * `dir`, created if missing, each atomically.
+ * `dir`, created if missing, each atomically, above their legends unless
+ * `withLegend` is false.
  * \return the paths written. \throws std::runtime_error naming the file or
  *  folder that cannot be written. */
 std::vector<std::string> savePicturesIn(
-	const mrpt_evidential::CEvidentialGridMap2D& map, const std::string& dir);
+	const mrpt_evidential::CEvidentialGridMap2D& map, const std::string& dir,
+	bool withLegend = true);
 
 /** "cells by decision:" and one line per decision, each count with its share
  * of `cellCount`, as `build`'s summary and `inspect` print them. */

@@ -59,6 +59,8 @@ allow "$(ls $lib/src/scan/*)" \
 allow "$(ls $lib/src/cloud/*)" \
   "^#include ($std|$algebra|$support|<mrpt/|<mrpt_evidential/(scan|cloud)/|\"cloud/)" \
   "cloud sources: the scan layer below them"
+allow "$(ls $lib/src/render/*)" \
+  "^#include ($std|$support|<mrpt/img/|\"render/)" "render: images and the support target"
 allow "$(ls $lib/src/insert/*)" \
   "^#include ($std|$algebra|$support|<mrpt/|<mrpt_evidential/(grid|scan)/|\"insert/)" \
   "insertion machinery: grid and scan below it"

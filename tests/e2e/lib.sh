@@ -103,11 +103,11 @@ only_file() {
 # check_evidential_files PREFIX MIN_FREE MIN_OCCUPIED: the files that
 # saveMetricMapRepresentationToFile writes for an evidential map exist, its
 # counts of free and occupied cells reach the minimums, the counts add up to
-# the grid, and every picture has one pixel per cell.
+# the grid, and every picture has one pixel per cell above its legend strip.
 check_evidential_files() {
 	local prefix=$1 min_free=$2 min_occupied=$3
 	local info=${prefix}_info.txt suffix
-	for suffix in _evidential.png _betp.png _conflict.png _info.txt .evgrid; do
+	for suffix in _map.png _evidential.png _betp.png _conflict.png _motion.png _info.txt .evgrid .3Dscene; do
 		[ -s "$prefix$suffix" ] || fail "missing or empty: $prefix$suffix"
 	done
 	local size counts
@@ -122,11 +122,12 @@ check_evidential_files() {
 		fail "the counts of $info do not add up to $sx x $sy cells"
 	[ "$free" -ge "$min_free" ] || fail "free cells: $free < $min_free"
 	[ "$occupied" -ge "$min_occupied" ] || fail "occupied cells: $occupied < $min_occupied"
-	local picture dims
-	for suffix in _evidential.png _betp.png _conflict.png; do
+	local picture w h
+	for suffix in _map.png _evidential.png _betp.png _conflict.png _motion.png; do
 		picture=$prefix$suffix
-		dims=$("$IDENTIFY" -format '%w %h' "$picture") || fail "identify cannot read $picture"
-		[ "$dims" = "$sx $sy" ] || fail "$picture is $dims pixels, the map $sx x $sy cells"
+		read -r w h <<<"$("$IDENTIFY" -format '%w %h' "$picture")" || fail "identify cannot read $picture"
+		[ "$w" -eq "$((sx > 320 ? sx : 320))" ] && [ "$h" -gt "$sy" ] ||
+			fail "$picture is $w x $h pixels, the map $sx x $sy cells above a legend"
 	done
 	ok "evidential files of $(basename "$prefix"): counts and picture sizes match"
 }

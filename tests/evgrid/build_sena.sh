@@ -5,7 +5,7 @@ source "$(dirname "$0")/lib.sh"
 
 out="$T/out"
 run 0 "$EVGRID" build -c "$EVGRID_INI" -i "$SENA" -o "$out"
-for f in map.evgrid evidential.png betp.png conflict.png motion.png summary.txt; do
+for f in map.evgrid map.3Dscene map.png evidential.png betp.png conflict.png motion.png summary.txt; do
   [ -s "$out/$f" ] || fail "missing or empty: $out/$f"
 done
 [ -z "$(find "$out" -name '.evgrid-build-*')" ] || fail "temporary folder left in $out"
@@ -14,7 +14,8 @@ done
 contains "$OUT" "evgrid build: 225 2-D scans: 225 inserted, 0 without a pose, 0 refused by the map"
 contains "$OUT" "scans/s"
 contains "$OUT" "time: reading "
-contains "$OUT" "pictures: $out/evidential.png, $out/betp.png, $out/conflict.png, $out/motion.png"
+contains "$OUT" "pictures: $out/map.png, $out/evidential.png, $out/betp.png, $out/conflict.png, $out/motion.png"
+contains "$OUT" "scene: $out/map.3Dscene"
 contains "$ERR" "evgrid build: 100%"
 lacks "$ERR" $'\r'
 
@@ -37,11 +38,13 @@ read -r free occupied unknown conflict <<<"$(decisions "$summary")"
 size=$(awk '$1 == "cells:" { print $2 * $4 }' "$summary")
 [ $((free + occupied + unknown + conflict)) -eq "$size" ] || fail "counts do not add up to $size cells"
 
-# One pixel per cell.
-cells=$(awk '$1 == "cells:" { print $2, $4 }' "$summary")
-for picture in evidential betp conflict motion; do
+# One pixel per cell, above the legend strip.
+read -r sx sy <<<"$(awk '$1 == "cells:" { print $2, $4 }' "$summary")"
+for picture in map evidential betp conflict motion; do
   run 0 "$EVGRID_CHECK" image "$out/$picture.png"
-  [ "$(cat "$OUT")" = "$cells" ] || fail "$picture.png is $(cat "$OUT") pixels, the map $cells cells"
+  read -r w h <"$OUT"
+  [ "$w" -eq "$sx" ] && [ "$h" -gt "$sy" ] && [ "$h" -lt $((sy + 100)) ] ||
+    fail "$picture.png is $w x $h pixels, the map $sx x $sy cells above its legend"
 done
 
 # --quiet: nothing on either stream, same outputs.

@@ -21,6 +21,10 @@
  *                                            rings, 360 firings, all at 5 m) and
  *                                            one 2-D scan (181 beams at 2 m)
  *   evgrid_check mrpt-version             -> MRPT's version, e.g. "2.5.8"
+ *   evgrid_check scene FILE               -> the names of a .3Dscene's objects,
+ *                                            one a line, those of a set after
+ *                                            it indented, a set of lines with
+ *                                            "(N lines)"
  *   evgrid_check footprint MAP FOOTPRINT  -> for each class of evgrid-simulate's
  *                                            footprint (ground, obstacle, low,
  *                                            overhang): "CLASS SEEN OCCUPIED_PCT",
@@ -35,6 +39,9 @@
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/obs/CActionCollection.h>
+#include <mrpt/opengl/COpenGLScene.h>
+#include <mrpt/opengl/CSetOfLines.h>
+#include <mrpt/opengl/CSetOfObjects.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
@@ -112,6 +119,31 @@ int image(const std::string& path)
 	mrpt::img::CImage img;
 	if (!img.loadFromFile(path)) throw std::runtime_error("cannot read " + path);
 	std::cout << img.getWidth() << " " << img.getHeight() << "\n";
+	return 0;
+}
+
+/** Lists `objects` (a viewport or a set), those of sets indented below them. */
+template <typename Objects>
+void listObjects(const Objects& objects, const std::string& indent)
+{
+	for (const auto& o : objects)
+	{
+		if (!o) continue;
+		std::cout << indent << o->getName();
+		if (const auto lines = std::dynamic_pointer_cast<mrpt::opengl::CSetOfLines>(o))
+			std::cout << " (" << lines->getLineCount() << " lines)";
+		std::cout << "\n";
+		if (const auto set = std::dynamic_pointer_cast<mrpt::opengl::CSetOfObjects>(o))
+			listObjects(*set, indent + "  ");
+	}
+}
+
+int scene(const std::string& path)
+{
+	// As SceneViewer3D opens it.
+	mrpt::opengl::COpenGLScene s;
+	if (!s.loadFromFile(path)) throw std::runtime_error("cannot read the scene " + path);
+	listObjects(*s.getViewport(), "");
 	return 0;
 }
 
@@ -323,12 +355,15 @@ int main(int argc, char** argv)
 		const std::string what = argc > 1 ? argv[1] : "";
 		if (what == "image" && argc == 3) return image(argv[2]);
 		if (what == "gridmap" && argc == 3) return gridmap(argv[2]);
+		if (what == "scene" && argc == 3) return scene(argv[2]);
 		if (what == "video" && argc == 3) return video(argv[2]);
 		if (what == "cells" && argc == 3) return cells(argv[2]);
 		if (what == "to-simplemap" && argc == 5) return toSimplemap(argv[2], argv[3], argv[4]);
 		if (what == "rotating-scan" && argc == 3) return rotatingScan(argv[2]);
 		if (what == "mrpt-version" && argc == 2)
-			return std::printf("%d.%d.%d\n", MRPT_VERSION >> 8, (MRPT_VERSION >> 4) & 0xF, MRPT_VERSION & 0xF) < 0;
+			return std::printf(
+					   "%d.%d.%d\n", MRPT_EVIDENTIAL_MRPT_VERSION >> 16,
+					   (MRPT_EVIDENTIAL_MRPT_VERSION >> 8) & 0xFF, MRPT_EVIDENTIAL_MRPT_VERSION & 0xFF) < 0;
 		if (what == "footprint" && argc == 4) return footprint(argv[2], argv[3]);
 		if (what == "odometry-path" && argc == 4)
 			return odometryPath(argv[2], argv[3]);

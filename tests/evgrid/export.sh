@@ -8,17 +8,35 @@ map="$built/map.evgrid"
 [ -s "$map" ] || fail "no map from evgrid_build_sena in $built"
 cells=$(awk '$1 == "cells:" { print $2, $4 }' "$built/summary.txt")
 
-run 0 "$EVGRID" export "$map" --png "$T/png" --gridmap "$T/grid/sena.gridmap" --ros "$T/ros/sena"
-for f in png/evidential.png png/betp.png png/conflict.png grid/sena.gridmap ros/sena.pgm ros/sena.yaml; do
+run 0 "$EVGRID_CHECK" odometry-path "$SENA" "$T/odometry.txt"
+run 0 "$EVGRID" export "$map" --png "$T/png" --gridmap "$T/grid/sena.gridmap" --ros "$T/ros/sena" \
+  --scene "$T/scene/sena.3Dscene" --path "$T/odometry.txt"
+for f in png/map.png png/evidential.png png/betp.png png/conflict.png png/motion.png grid/sena.gridmap \
+  ros/sena.pgm ros/sena.yaml scene/sena.3Dscene; do
   [ -s "$T/$f" ] || fail "missing or empty: $T/$f"
   contains "$OUT" "wrote $T/$f"
 done
 [ -z "$(find "$T" -name '.*.tmp-*')" ] || fail "temporary files left in $T"
 
-# The pictures are those of the build.
-for picture in evidential betp conflict; do
+# The pictures are those of the build; --bare leaves out the legend.
+for picture in map evidential betp conflict motion; do
   cmp -s "$T/png/$picture.png" "$built/$picture.png" || fail "$picture.png differs from the build's"
 done
+run 0 "$EVGRID" export "$map" --png "$T/bare" --bare
+run 0 "$EVGRID_CHECK" image "$T/bare/map.png"
+[ "$(cat "$OUT")" = "$cells" ] || fail "bare map.png is $(cat "$OUT") pixels, the map $cells cells"
+run 2 "$EVGRID" export "$map" --gridmap "$T/x.gridmap" --bare
+contains "$ERR" "--bare needs --png"
+run 2 "$EVGRID" export "$map" --gridmap "$T/x.gridmap" --path "$T/odometry.txt"
+contains "$ERR" "--path needs --scene"
+
+# The scene, read as SceneViewer3D reads it: the map's planes and the path,
+# one line between each two of SENA's scans.
+run 0 "$EVGRID_CHECK" scene "$T/scene/sena.3Dscene"
+for name in evidentialGrid "  evidentialGrid.free" "  evidentialGrid.occupied" "path ($(( $(grep -vc "^#" "$T/odometry.txt") - 1 )) lines)"; do
+  grep -qxF "$name" "$OUT" || fail "the scene has no '$name': $(cat "$OUT")"
+done
+grep -q "unknown" "$OUT" && fail "unknown cells drawn in the scene: $(cat "$OUT")"
 
 # The .gridmap, read as pf-localization reads its map_file: same resolution,
 # the same cells (give or take the one MRPT adds when it snaps the bounds).

@@ -6,7 +6,7 @@ out="$T/out"
 run 0 "$EVGRID" build -i "$SENA" -o "$out" --every 50 --animation --animation-every 10 \
   --animation-size 320x240 --animation-fps 10
 frames=$(cd "$out/frames" && ls)
-[ "$frames" = "$(printf 'frame_%06d_evidential.png\nframe_%06d_motion.png\n' 50 50 100 100 150 150 200 200)" ] ||
+[ "$frames" = "$(printf 'frame_%06d_map.png\n' 50 100 150 200)" ] ||
   fail "frames: $frames"
 contains "$out/summary.txt" "frames: 4 pictures in frames/, one every 50 scans"
 contains "$out/summary.txt" "animation: growth.avi, 22 frames of 320 x 240 at 10 frames/s"
@@ -19,7 +19,7 @@ area() {
   echo $((w * h))
 }
 previous=0
-for picture in "$out"/frames/frame_{000050,000100,000150,000200}_evidential.png "$out/evidential.png"; do
+for picture in "$out"/frames/frame_{000050,000100,000150,000200}_map.png "$out/map.png"; do
   current=$(area "$picture")
   [ "$current" -ge "$previous" ] || fail "$picture covers $current cells, less than $previous before it"
   previous=$current
@@ -33,7 +33,7 @@ run 0 "$EVGRID_CHECK" video "$out/growth.avi"
 # A new run with --every replaces frames/: no frame of the old run remains.
 run 0 "$EVGRID" build -i "$SENA" -o "$out" --every 100
 frames=$(cd "$out/frames" && ls)
-[ "$frames" = "$(printf 'frame_%06d_evidential.png\nframe_%06d_motion.png\n' 100 100 200 200)" ] ||
+[ "$frames" = "$(printf 'frame_%06d_map.png\n' 100 200)" ] ||
   fail "frames after the rerun: $frames"
 [ -z "$(find "$out" -name '.evgrid-build-*')" ] || fail "temporary folder left in $out"
 echo "evgrid_growth: OK"

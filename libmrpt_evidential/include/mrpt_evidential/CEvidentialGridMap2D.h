@@ -4,12 +4,14 @@
 
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/core/Clock.h>
+#include <mrpt/img/TColor.h>
 #include <mrpt/math/TBoundingBox.h>
 #include <mrpt/math/TPoint3D.h>
 #include <mrpt/maps/CMetricMap.h>
 #include <mrpt_evidential/EnumNames.h>
 #include <mrpt_evidential/Motion.h>
 #include <mrpt_evidential/MrptCompat.h>
+#include <mrpt_evidential/RenderStyle.h>
 #include <mrpt_evidential/algebra/combination.h>
 #include <mrpt_evidential/grid/EvidentialGridStorage.h>
 #include <mrpt_evidential/scan/CPolarSourceGrid.h>
@@ -184,8 +186,13 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	/** @} */
 
 	/** @name Pictures and conversions
-	 * Pictures have one pixel per cell, row 0 at the top (largest y).
+	 * Pictures have one pixel per cell, row 0 at the top (largest y). The
+	 * colours of getAsImage() and getAsMotionImage() are renderingOptions'.
 	 * @{ */
+	/** The map as its 3-D view draws it (RenderStyle::Classes), 8-bit RGB: each
+	 * cell in the colour of its class (classOfCell()), unknown cells in
+	 * renderingOptions.unknownColor. */
+	void getAsImage(mrpt::img::CImage& img) const;
 	/** Evidential colours, 8-bit RGB: red = m(O) + m(empty),
 	 * green = m(F) + m(empty), blue = m(Omega) + m(empty), times 255. Without
 	 * conflict the channels sum to 255 (pure red, green, blue and their
@@ -200,8 +207,8 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	void getAsConflictImage(mrpt::img::CImage& img) const;
 	/** The motion layer over the static map: the static map as BetP in grey
 	 * levels (white free, black occupied, mid-grey unknown), cells where
-	 * something appeared in orange (255, 128, 0), cells it left in blue
-	 * (0, 160, 255). */
+	 * something appeared in renderingOptions.appearedColor, cells it left in
+	 * renderingOptions.disappearedColor. */
 	void getAsMotionImage(mrpt::img::CImage& img) const;
 	/** Fills an occupancy grid of the same geometry with occupancy = BetP. */
 	void getAsOccupancyGrid(mrpt::maps::COccupancyGridMap2D& grid) const;
@@ -209,14 +216,47 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	 * (occupancy = BetP; unknown cells as 205). Written atomically.
 	 * \throws std::runtime_error if a file cannot be written. */
 	void saveAsROSMap(const std::string& prefix) const;
-	/** Writes the four pictures above as `<prefix>evidential.png`,
-	 * `<prefix>betp.png`, `<prefix>conflict.png` and `<prefix>motion.png`
-	 * (pictureNames()), each
-	 * atomically; the prefix is a folder ending in '/' or a file name's stem.
+	/** Writes the five pictures above as `<prefix>map.png`,
+	 * `<prefix>evidential.png`, `<prefix>betp.png`, `<prefix>conflict.png`
+	 * and `<prefix>motion.png` (pictureNames()), each atomically; the prefix
+	 * is a folder ending in '/' or a file name's stem. Each file is the
+	 * picture (one pixel per cell, at its top left) above a strip with its
+	 * legend and a scale bar (doc/map.md, "Pictures"); `withLegend` false
+	 * writes the bare pictures.
 	 * \throws std::runtime_error if a file cannot be written. */
-	void savePictures(const std::string& prefix) const;
+	void savePictures(const std::string& prefix, bool withLegend = true) const;
+	/** Picture `which` of pictureNames() as savePictures() writes it, above
+	 * its legend and scale bar unless `withLegend` is false; with `width`
+	 * and `height` > 0 (a video's frames), scaled to fit a picture of that
+	 * size above the legend (the legend left out when it would take more
+	 * than half of the height). \throws std::out_of_range if which >= 5. */
+	void getAsPicture(
+		std::size_t which, mrpt::img::CImage& img, bool withLegend = true, int width = 0,
+		int height = 0) const;
 	/** The names savePictures() appends to its prefix. */
-	static const std::array<const char*, 4>& pictureNames();
+	static const std::array<const char*, 5>& pictureNames();
+	/** Writes a scene that MRPT's SceneViewer3D opens (an
+	 * mrpt::opengl::COpenGLScene): the map as getVisualizationInto() draws it
+	 * and, when `path` is not empty, the robot's path as a line strip through
+	 * its positions (in MRPT's path colour, above the map). Written atomically.
+	 * \throws std::runtime_error if the file cannot be written. */
+	void saveAsScene(
+		const std::string& path3Dscene,
+		const std::vector<mrpt::math::TPoint3D>& path = {}) const;
+	/** The classes of cells that the 3-D view and getAsImage() draw. */
+	enum class CellClass
+	{
+		Unknown,
+		Free,
+		Occupied,
+		Conflict,
+		Appeared,
+		Disappeared
+	};
+	/** The class of the cell holding (x, y): its motion when the motion
+	 * layer reports one (getCellMotion()), else its decision (decide());
+	 * Unknown outside the map. Never throws. */
+	CellClass classOfCell(double x, double y) const;
 	/** The geometry in four lines, each after `indent`: "x: [xmin, xmax]
 	 * m", "y: [ymin, ymax] m", "resolution: r m", "cells: NX x NY (budget
 	 * B)", numbers in their shortest exact text. */
@@ -257,8 +297,11 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	TMapChanges changesSince(
 		const CEvidentialGridMap2D& earlier, double minConflict = 0.5, double clearance = 0.1) const;
 	/** This map as getAsMotionImage() draws it, with `changes` (of
-	 * changesSince()) as the motion: appeared orange, disappeared blue. */
-	void getAsChangesImage(const TMapChanges& changes, mrpt::img::CImage& img) const;
+	 * changesSince()) as the motion (appeared and disappeared in
+	 * renderingOptions' colours), above the motion picture's legend when
+	 * `withLegend`. */
+	void getAsChangesImage(
+		const TMapChanges& changes, mrpt::img::CImage& img, bool withLegend = false) const;
 	/** @} */
 
 	/** @name CMetricMap interface
@@ -276,7 +319,18 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 		const std::string& filNamePrefix) const override;
 	/** One line: geometry, insertions and counts per decision. */
 	std::string asString() const override;
-	/** A textured plane with the evidential picture at the map's place. */
+	/** The map at its place, as renderingOptions says: with
+	 * RenderStyle::Classes, one textured plane per class of cell that the map
+	 * holds and the options show, named "evidentialGrid.free",
+	 * "evidentialGrid.occupied", "evidentialGrid.conflict",
+	 * "evidentialGrid.unknown", "evidentialGrid.disappeared" and
+	 * "evidentialGrid.appeared", each covering the cells of its class
+	 * (transparent elsewhere) in the bounding box of those cells, unlit so
+	 * that its colour is the option's; with RenderStyle::Masses, one plane
+	 * "evidentialGrid.masses" with getAsEvidentialImage(). The planes lie
+	 * just under renderingOptions.height, in this order, 1 mm apart, so that
+	 * later ones and whatever lies at that height draw over earlier ones.
+	 * Nothing when genericMapParams.enableSaveAs3DObject is false. */
 	void getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const override;
 	/** 0: the map takes no part in point matching. */
 	float compute3DMatchingRatio(
@@ -466,6 +520,66 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	};
 	TLikelihoodOptions likelihoodOptions;
 
+	/** How getVisualizationInto() and the pictures draw the map,
+	 * `[<prefix>_evidentialGrid_NN_renderOpts]` in .ini files. A colour is
+	 * written `#RRGGBB` or `RRGGBB` (hexadecimal). The defaults draw the
+	 * static map as MRPT users read occupancy grids (free light, occupied
+	 * dark, unknown not drawn in 3-D) and what only an evidential map knows
+	 * in tints apart from the blue of MRPT's points maps and the colours of
+	 * its paths. */
+	struct TRenderingOptions : public mrpt::config::CLoadableOptions
+	{
+		/** `style`: Classes (default) or Masses (RenderStyle). */
+		RenderStyle style = RenderStyle::Classes;
+		/** `freeColor`, default #EBEBEB. */
+		mrpt::img::TColor freeColor{0xEB, 0xEB, 0xEB};
+		/** `occupiedColor`, default #1E1E1E. */
+		mrpt::img::TColor occupiedColor{0x1E, 0x1E, 0x1E};
+		/** `unknownColor`, default #8C8C8C: unknown cells in the pictures,
+		 * and in the 3-D view when showUnknown. */
+		mrpt::img::TColor unknownColor{0x8C, 0x8C, 0x8C};
+		/** `conflictColor`, default #B43CC8 (violet): cells whose decision is
+		 * Conflict (maps whose conflictHandling is Keep). */
+		mrpt::img::TColor conflictColor{0xB4, 0x3C, 0xC8};
+		/** `appearedColor`, default #FF8C00 (orange). */
+		mrpt::img::TColor appearedColor{0xFF, 0x8C, 0x00};
+		/** `disappearedColor`, default #00AAAA (teal). */
+		mrpt::img::TColor disappearedColor{0x00, 0xAA, 0xAA};
+		/** `showFree`, `showOccupied`, `showConflict`, `showMotion`: whether
+		 * the 3-D view has the class's plane, default true; without the
+		 * motion planes, moving cells show their decision. `showUnknown`,
+		 * default false: unknown cells are transparent, as in MRPT's grid.
+		 * The pictures draw every class. */
+		bool showFree = true, showOccupied = true, showConflict = true,
+			 showMotion = true, showUnknown = false;
+		/** `height`: z of the 3-D view's top plane, metres, within
+		 * [-1000, 1000], default -0.001: just under z = 0, where 2-D scans'
+		 * points and paths lie, so that they stay visible over the map. */
+		double height = -0.001;
+
+		/** Reads the keys above from `section`; absent keys keep their value;
+		 * nothing changes unless every value is valid.
+		 * \throws std::invalid_argument naming the key and value of the first
+		 *  invalid one. */
+		void loadFromConfigFile(
+			const mrpt::config::CConfigFileBase& source,
+			const std::string& section) override;
+		/** Writes every key; loadFromConfigFile() reads them back exactly. */
+		void saveToConfigFile(
+			mrpt::config::CConfigFileBase& target,
+			const std::string& section) const override;
+		/** Prints the keys as saveToConfigFile() writes them. */
+		void dumpToTextStream(std::ostream& out) const override;
+		/** The first invalid field, with its rule. */
+		std::optional<TInvalidOption> firstInvalid() const;
+		/** \throws std::invalid_argument "renderOpts: " followed by the
+		 *  description of firstInvalid(). */
+		void validate() const;
+		/** The colour the options give a class of cell. */
+		mrpt::img::TColor colorOf(CellClass c) const;
+	};
+	TRenderingOptions renderingOptions;
+
 	MAP_DEFINITION_START(CEvidentialGridMap2D)
 	/** `[<prefix>_evidentialGrid_NN_creationOpts]`: min_x, max_x, min_y,
 	 * max_y (metres, min < max, within 1e9 m of the origin), resolution
@@ -476,6 +590,7 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	std::size_t maxCells = CEvidentialGridMap2D::kDefaultMaxCells;
 	mrpt_evidential::CEvidentialGridMap2D::TInsertionOptions insertionOpts;
 	mrpt_evidential::CEvidentialGridMap2D::TLikelihoodOptions likelihoodOpts;
+	mrpt_evidential::CEvidentialGridMap2D::TRenderingOptions renderingOpts;
 	MAP_DEFINITION_END(CEvidentialGridMap2D)
 
 	/** The map a definition describes, as CreateFromMapDefinition() makes it
@@ -520,6 +635,9 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	void fuseWithMotion(CScanImpacts& impacts);
 	/** What the motion layer says of cell idx. */
 	Motion motionOf(std::size_t idx) const;
+	/** The class of cell idx (classOfCell()); its decision's class alone
+	 * when `withMotion` is false. */
+	CellClass classOf(std::size_t idx, bool withMotion = true) const;
 	/** Paints the static map in grey levels with `motion(idx)` over it. */
 	void paintMotion(mrpt::img::CImage& img, const std::function<Motion(std::size_t)>& motion) const;
 	/** The index in this map of `other`'s cell idx, or nothing when it

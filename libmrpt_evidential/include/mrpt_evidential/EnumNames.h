@@ -6,6 +6,7 @@
 
 #include <mrpt/typemeta/TEnumType.h>
 #include <mrpt_evidential/algebra/combination.h>
+#include <mrpt_evidential/RenderStyle.h>
 #include <mrpt_evidential/cloud/GroundRemoval.h>
 #include <mrpt_evidential/scan/SensorModel.h>
 
@@ -43,4 +44,9 @@ MRPT_ENUM_TYPE_END()
 MRPT_ENUM_TYPE_BEGIN(mrpt_evidential::GroundReturns)
 MRPT_FILL_ENUM_MEMBER(mrpt_evidential::GroundReturns, FreeSpace);
 MRPT_FILL_ENUM_MEMBER(mrpt_evidential::GroundReturns, Nothing);
+MRPT_ENUM_TYPE_END()
+
+MRPT_ENUM_TYPE_BEGIN(mrpt_evidential::RenderStyle)
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::RenderStyle, Classes);
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::RenderStyle, Masses);
 MRPT_ENUM_TYPE_END()

@@ -3,8 +3,9 @@
  * (Debian 12, bookworm) and 2.14 (Debian 13, trixie). Every switch on
  * MRPT_VERSION is here, and nowhere else.
  *
- * MRPT_VERSION has three hex digits: 2.5.8 is 0x258, 2.11.3 is 0x2B3, 2.14.7
- * is 0x2E7.
+ * MRPT_VERSION had one hex digit per part up to 2.10.1 (2.5.8 is 0x258) and
+ * has two since 2.10.2 (2.14.7 is 0x020E07); MRPT_EVIDENTIAL_MRPT_VERSION is
+ * the two-digit form of either, which the switches compare.
  *
  * One switch is not MRPT's: Google Benchmark's failed runs (1.7.1 on Debian
  * 12, 1.9.1 on Debian 13), told apart by the member the run has, so that this
@@ -22,10 +23,18 @@ namespace mrpt::maps
 class CMetricMap;
 }
 
+#if MRPT_VERSION < 0x1000
+#define MRPT_EVIDENTIAL_MRPT_VERSION                                        \
+	((((MRPT_VERSION) >> 8) << 16) | ((((MRPT_VERSION) >> 4) & 0xF) << 8) | \
+	 ((MRPT_VERSION)&0xF))
+#else
+#define MRPT_EVIDENTIAL_MRPT_VERSION (MRPT_VERSION)
+#endif
+
 /** MRPT 2.11.3: the map factories (MAP_DEFINITION_START's
  * CreateFromMapDefinition and internal_CreateFromMapDefinition) return shared
  * pointers, and CMetricMap::boundingBox() is a virtual. */
-#define MRPT_EVIDENTIAL_MRPT_SINCE_2_11_3 (MRPT_VERSION >= 0x2B3)
+#define MRPT_EVIDENTIAL_MRPT_SINCE_2_11_3 (MRPT_EVIDENTIAL_MRPT_VERSION >= 0x020B03)
 
 /** MRPT 2.11.3: a map list read from an .ini (TSetOfMetricMapInitializers::
  * loadFromConfigFile) that names a map class nobody registered throws;

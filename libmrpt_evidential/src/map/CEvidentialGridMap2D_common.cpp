@@ -72,6 +72,7 @@ void CEvidentialGridMap2D::TMapDefinition::loadFromConfigFile_map_specific(
 	insertionOpts.loadFromConfigFile(source, sectionNamePrefix + "_insertOpts");
 	likelihoodOpts.loadFromConfigFile(
 		source, sectionNamePrefix + "_likelihoodOpts");
+	renderingOpts.loadFromConfigFile(source, sectionNamePrefix + "_renderOpts");
 }
 
 void CEvidentialGridMap2D::TMapDefinition::dumpToTextStream_map_specific(
@@ -83,6 +84,7 @@ void CEvidentialGridMap2D::TMapDefinition::dumpToTextStream_map_specific(
 		<< "\n";
 	insertionOpts.dumpToTextStream(out);
 	likelihoodOpts.dumpToTextStream(out);
+	renderingOpts.dumpToTextStream(out);
 }
 
 compat::MapFactoryResult CEvidentialGridMap2D::internal_CreateFromMapDefinition(
@@ -103,6 +105,7 @@ std::unique_ptr<CEvidentialGridMap2D> CEvidentialGridMap2D::fromDefinition(
 	map->setSize(d.min_x, d.max_x, d.min_y, d.max_y, d.resolution);
 	map->insertionOptions = d.insertionOpts;
 	map->likelihoodOptions = d.likelihoodOpts;
+	map->renderingOptions = d.renderingOpts;
 	return map;
 }
 

@@ -3,8 +3,6 @@
 
 #include <mrpt/img/CImage.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
-#include <mrpt/opengl/CSetOfObjects.h>
-#include <mrpt/opengl/CTexturedPlane.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/serialization/archiveFrom_std_streams.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
@@ -21,6 +19,7 @@
 
 #include <mrpt_evidential/support/AtomicFile.h>
 #include <mrpt_evidential/support/NumberText.h>
+#include "render/PictureLegend.h"
 
 using namespace mrpt_evidential;
 using mrpt_evidential::detail::writeFileAtomically;
@@ -121,12 +120,14 @@ void CEvidentialGridMap2D::getAsMotionImage(mrpt::img::CImage& img) const
 void CEvidentialGridMap2D::paintMotion(
 	mrpt::img::CImage& img, const std::function<Motion(std::size_t)>& motion) const
 {
-	// Blue first, as in getAsEvidentialImage().
+	const auto put = [](std::uint8_t* p, const mrpt::img::TColor& c) {
+		p[0] = c.B, p[1] = c.G, p[2] = c.R;  // blue first, as in getAsEvidentialImage()
+	};
 	paint(m_grid, img, mrpt::img::CH_RGB, [&](std::size_t idx, std::uint8_t* p) {
 		switch (motion(idx))
 		{
-			case Motion::Appeared: p[0] = 0, p[1] = 128, p[2] = 255; return;
-			case Motion::Disappeared: p[0] = 255, p[1] = 160, p[2] = 0; return;
+			case Motion::Appeared: return put(p, renderingOptions.appearedColor);
+			case Motion::Disappeared: return put(p, renderingOptions.disappearedColor);
 			case Motion::None: break;
 		}
 		p[0] = p[1] = p[2] = toByte(1.0 - betP(m_grid.read(idx)));
@@ -199,39 +200,78 @@ std::vector<std::pair<double, double>>
 	return centers;
 }
 
-void CEvidentialGridMap2D::getVisualizationInto(
-	mrpt::opengl::CSetOfObjects& o) const
+const std::array<const char*, 5>& CEvidentialGridMap2D::pictureNames()
 {
-	if (!genericMapParams.enableSaveAs3DObject) return;
-	mrpt::img::CImage img;
-	getAsEvidentialImage(img);
-	img.flipVertical();  // the plane maps texture row 0 to yMin
-	const GridGeometry& g = geometry();
-	auto plane = mrpt::opengl::CTexturedPlane::Create(
-		static_cast<float>(g.xMin), static_cast<float>(g.xMax()),
-		static_cast<float>(g.yMin), static_cast<float>(g.yMax()));
-	plane->assignImage(std::move(img));
-	o.insert(plane);
-}
-
-const std::array<const char*, 4>& CEvidentialGridMap2D::pictureNames()
-{
-	static const std::array<const char*, 4> names{
-		"evidential.png", "betp.png", "conflict.png", "motion.png"};
+	static const std::array<const char*, 5> names{
+		"map.png", "evidential.png", "betp.png", "conflict.png", "motion.png"};
 	return names;
 }
 
-void CEvidentialGridMap2D::savePictures(const std::string& prefix) const
+namespace
+{
+/** What the colours of picture `which` (of pictureNames()) mean. */
+std::vector<detail::LegendEntry> legendOf(
+	std::size_t which, const CEvidentialGridMap2D::TRenderingOptions& ro)
+{
+	const mrpt::img::TColor white{255, 255, 255}, black{0, 0, 0}, grey{128, 128, 128};
+	switch (which)
+	{
+		case 0:
+			return {{ro.freeColor, "free"},         {ro.occupiedColor, "occupied"},
+					{ro.unknownColor, "unknown"},   {ro.conflictColor, "conflict"},
+					{ro.appearedColor, "appeared"}, {ro.disappearedColor, "disappeared"}};
+		case 1:
+			return {{{255, 0, 0}, "m(O)"}, {{0, 255, 0}, "m(F)"}, {{0, 0, 255}, "m(Omega)"},
+					{white, "conflict"}};
+		case 2: return {{white, "BetP 0 (free)"}, {grey, "0.5"}, {black, "1 (occupied)"}};
+		case 3: return {{black, "no conflict"}, {white, "total conflict"}};
+		default:
+			return {{white, "free"},
+					{black, "occupied"},
+					{grey, "unknown"},
+					{ro.appearedColor, "appeared"},
+					{ro.disappearedColor, "disappeared"}};
+	}
+}
+constexpr std::size_t kMotionPicture = 4;
+}  // namespace
+
+void CEvidentialGridMap2D::getAsPicture(
+	std::size_t which, mrpt::img::CImage& img, bool withLegend, int width, int height) const
+{
+	using Painter = void (CEvidentialGridMap2D::*)(mrpt::img::CImage&) const;
+	const std::array<Painter, 5> painters{
+		&CEvidentialGridMap2D::getAsImage, &CEvidentialGridMap2D::getAsEvidentialImage,
+		&CEvidentialGridMap2D::getAsBetPImage, &CEvidentialGridMap2D::getAsConflictImage,
+		&CEvidentialGridMap2D::getAsMotionImage};
+	(this->*painters.at(which))(img);
+	if (withLegend)
+		img = detail::withLegend(
+			img, geometry().resolution, legendOf(which, renderingOptions), width, height);
+}
+
+void CEvidentialGridMap2D::getAsChangesImage(
+	const TMapChanges& changes, mrpt::img::CImage& img, bool withLegend) const
+{
+	std::vector<Motion> motion(geometry().cellCount(), Motion::None);
+	for (const std::size_t i : changes.appeared)
+		if (i < motion.size()) motion[i] = Motion::Appeared;
+	for (const std::size_t i : changes.disappeared)
+		if (i < motion.size()) motion[i] = Motion::Disappeared;
+	paintMotion(img, [&](std::size_t idx) { return motion[idx]; });
+	if (withLegend)
+		img = detail::withLegend(
+			img, geometry().resolution, legendOf(kMotionPicture, renderingOptions));
+}
+
+void CEvidentialGridMap2D::savePictures(const std::string& prefix, bool withLegend) const
 {
 	mrpt::img::CImage img;
-	getAsEvidentialImage(img);
-	savePicture(prefix + pictureNames()[0], img);
-	getAsBetPImage(img);
-	savePicture(prefix + pictureNames()[1], img);
-	getAsConflictImage(img);
-	savePicture(prefix + pictureNames()[2], img);
-	getAsMotionImage(img);
-	savePicture(prefix + pictureNames()[3], img);
+	for (std::size_t i = 0; i < pictureNames().size(); ++i)
+	{
+		getAsPicture(i, img, withLegend);
+		savePicture(prefix + pictureNames()[i], img);
+	}
 }
 
 std::string CEvidentialGridMap2D::geometryText(const std::string& indent) const
@@ -253,6 +293,7 @@ void CEvidentialGridMap2D::saveMetricMapRepresentationToFile(
 	const std::string& filNamePrefix) const
 {
 	savePictures(filNamePrefix + "_");
+	saveAsScene(filNamePrefix + ".3Dscene");
 
 	writeFileAtomically(filNamePrefix + "_info.txt", [this](std::ostream& os) {
 		const TDecisionCounts c = countDecisions();
@@ -264,6 +305,7 @@ void CEvidentialGridMap2D::saveMetricMapRepresentationToFile(
 		   << c.conflict << "\n\n";
 		insertionOptions.dumpToTextStream(os);
 		likelihoodOptions.dumpToTextStream(os);
+		renderingOptions.dumpToTextStream(os);
 		os << "// genericMapParams\n";
 		genericMapParams.dumpToTextStream(os);
 	});

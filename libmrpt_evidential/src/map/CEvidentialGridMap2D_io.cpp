@@ -1,7 +1,7 @@
 /* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
  * CEvidentialGridMap2D: serialization (CSerializable).
  *
- * Layout of version 3, after MRPT's object header (class name, version byte),
+ * Layout of version 4, after MRPT's object header (class name, version byte),
  * every number little-endian:
  *   geometry     f64 xMin, f64 yMin, f64 resolution, i32 sizeX, i32 sizeY
  *   budget       u64 maxCells
@@ -17,6 +17,10 @@
  *   likelihood   f64 occupiedMass, f64 maxCorrsDistance, f64 sigma, f64 zHit,
  *                f64 zRandom, f64 maxRange, u32 decimation,
  *                u8 unknownAsNeutral
+ *   rendering    u8 style, 6 x (u8 R, u8 G, u8 B) colours (free, occupied,
+ *                unknown, conflict, appeared, disappeared), u8 showFree,
+ *                u8 showOccupied, u8 showConflict, u8 showMotion,
+ *                u8 showUnknown, f64 height
  *   generic      genericMapParams as an MRPT object (its own header/version)
  *   stamps       u32 count N, N x f64 insertion times
  *   storage      u64 insertionCount, f64 decayRate (the storage's),
@@ -25,6 +29,7 @@
  *                u16 aside, u16 free, u16 occupied, u16 stamp: the conflict
  *                (keepsConflict) or the motion event, and the normal part's
  *                free and occupied masses (QuantizedCell)
+ * Version 3 had no rendering options (read as the defaults).
  * Version 2 had no cloud options (groundRemoval to groundReturns: read as
  * the defaults). Version 1 had no freeMargin (read as 0), no motion options and no
  * keepsConflict: its cells always
@@ -134,6 +139,14 @@ E readEnum(CArchive& in, const char* field)
 	return value;
 }
 
+/** The rendering options' colours in the order the file holds them. */
+template <typename Options>
+auto colorsOf(Options& o)
+{
+	return std::array{&o.freeColor,     &o.occupiedColor,  &o.unknownColor,
+					  &o.conflictColor, &o.appearedColor, &o.disappearedColor};
+}
+
 bool readBool(CArchive& in, const char* field)
 {
 	const auto v = in.ReadAs<std::uint8_t>();
@@ -152,7 +165,7 @@ std::uint16_t getU16(const std::uint8_t* p)
 }
 }  // namespace
 
-uint8_t CEvidentialGridMap2D::serializeGetVersion() const { return 3; }
+uint8_t CEvidentialGridMap2D::serializeGetVersion() const { return 4; }
 
 void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 {
@@ -181,6 +194,13 @@ void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 	ar << lo.occupiedMass << lo.maxCorrsDistance << lo.sigma << lo.zHit
 	   << lo.zRandom << lo.maxRange << static_cast<std::uint32_t>(lo.decimation)
 	   << static_cast<std::uint8_t>(lo.unknownAsNeutral);
+
+	const TRenderingOptions& ro = renderingOptions;
+	writeEnum(ar, ro.style);
+	for (const mrpt::img::TColor* c : colorsOf(ro)) ar << c->R << c->G << c->B;
+	for (const bool b : {ro.showFree, ro.showOccupied, ro.showConflict, ro.showMotion, ro.showUnknown})
+		ar << static_cast<std::uint8_t>(b);
+	ar << ro.height;
 
 	ar << genericMapParams;
 
@@ -215,7 +235,7 @@ void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 
 void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 {
-	if (version > 3) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+	if (version > 4) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
 
 	// Everything goes into locals: the map changes only once all is read,
 	// checked and validated.
@@ -263,6 +283,16 @@ void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 		lo.zRandom >> lo.maxRange;
 	lo.decimation = ar.ReadAs<std::uint32_t>();
 	lo.unknownAsNeutral = readBool(ar, "unknownAsNeutral");
+
+	TRenderingOptions ro;
+	if (version >= 4)
+	{
+		ro.style = readEnum<RenderStyle>(ar, "style");
+		for (mrpt::img::TColor* c : colorsOf(ro)) ar >> c->R >> c->G >> c->B;
+		for (bool* b : {&ro.showFree, &ro.showOccupied, &ro.showConflict, &ro.showMotion, &ro.showUnknown})
+			*b = readBool(ar, "show");
+		ar >> ro.height;
+	}
 
 	mrpt::maps::TMapGenericParams generic;
 	ar >> generic;
@@ -330,6 +360,7 @@ void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 	{
 		io.validate();
 		lo.validate();
+		ro.validate();
 		// The polar grid's rules at the grid's own cells (validate() checks
 		// them for cells of 1 m): a map read back must be able to insert.
 		io.sourceGridOptions(g.resolution).validate();
@@ -356,6 +387,7 @@ void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 	setMaxCells(static_cast<std::size_t>(maxCells));
 	insertionOptions = io;
 	likelihoodOptions = lo;
+	renderingOptions = ro;
 	genericMapParams = generic;
 	invalidateLikelihoodCache();
 }

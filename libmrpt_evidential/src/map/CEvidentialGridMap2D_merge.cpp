@@ -2,7 +2,6 @@
  * CEvidentialGridMap2D: maps from many runs (fusing maps, what changed
  * between two). */
 
-#include <mrpt/img/CImage.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 
 #include <algorithm>
@@ -131,13 +130,3 @@ CEvidentialGridMap2D::TMapChanges CEvidentialGridMap2D::changesSince(
 	return out;
 }
 
-void CEvidentialGridMap2D::getAsChangesImage(
-	const TMapChanges& changes, mrpt::img::CImage& img) const
-{
-	std::vector<Motion> motion(geometry().cellCount(), Motion::None);
-	for (const std::size_t i : changes.appeared)
-		if (i < motion.size()) motion[i] = Motion::Appeared;
-	for (const std::size_t i : changes.disappeared)
-		if (i < motion.size()) motion[i] = Motion::Disappeared;
-	paintMotion(img, [&](std::size_t idx) { return motion[idx]; });
-}

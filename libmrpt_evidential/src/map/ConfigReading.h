@@ -6,10 +6,12 @@
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/img/TColor.h>
 #include <mrpt/typemeta/TEnumType.h>
 
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
@@ -141,6 +143,24 @@ void readEnum(
 	}
 }
 
+/** Reads a colour written #RRGGBB or RRGGBB (hexadecimal) when the key is
+ * present. */
+inline void readColor(
+	const mrpt::config::CConfigFileBase& source, const std::string& section,
+	const std::string& key, mrpt::img::TColor& value)
+{
+	const std::string text = readWord(source, section, key);
+	if (text.empty()) return;
+	const std::string hex = text[0] == '#' ? text.substr(1) : text;
+	const bool valid = hex.size() == 6 &&
+		hex.find_first_not_of("0123456789abcdefABCDEF") == std::string::npos;
+	if (!valid) throwBadValue(section, key, text, "not a colour #RRGGBB");
+	const unsigned long rgb = std::strtoul(hex.c_str(), nullptr, 16);
+	value = mrpt::img::TColor(
+		static_cast<std::uint8_t>(rgb >> 16), static_cast<std::uint8_t>(rgb >> 8),
+		static_cast<std::uint8_t>(rgb));
+}
+
 /** Name of an enum value, for dumps. */
 template <typename Enum>
 std::string enumName(Enum value)
@@ -164,6 +184,14 @@ inline void writeValue(
 	const std::string& key, bool value, const std::string& comment)
 {
 	target.write(section, key, std::string(value ? "true" : "false"), -1, -1, comment);
+}
+inline void writeValue(
+	mrpt::config::CConfigFileBase& target, const std::string& section,
+	const std::string& key, const mrpt::img::TColor& value, const std::string& comment)
+{
+	char text[8];
+	std::snprintf(text, sizeof(text), "#%02X%02X%02X", value.R, value.G, value.B);
+	target.write(section, key, std::string(text), -1, -1, comment);
 }
 template <typename Enum, typename = std::enable_if_t<std::is_enum_v<Enum>>>
 void writeValue(

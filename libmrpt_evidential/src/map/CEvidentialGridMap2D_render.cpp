@@ -1,0 +1,297 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
+ * CEvidentialGridMap2D: how the map is drawn (rendering options, classes of
+ * cells, the 3-D view and scene files). */
+
+#include <mrpt/img/CImage.h>
+#include <mrpt/opengl/COpenGLScene.h>
+#include <mrpt/opengl/CSetOfLines.h>
+#include <mrpt/opengl/CSetOfObjects.h>
+#include <mrpt/opengl/CTexturedPlane.h>
+#include <mrpt_evidential/CEvidentialGridMap2D.h>
+
+#include <algorithm>
+#include <array>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <utility>
+
+#include <mrpt_evidential/support/AtomicFile.h>
+#include "map/ConfigReading.h"
+
+using namespace mrpt_evidential;
+using CellClass = CEvidentialGridMap2D::CellClass;
+
+namespace
+{
+/** The planes of the 3-D view, bottom first, with their names' suffixes. */
+constexpr std::array<std::pair<CellClass, const char*>, 6> kPlanes{{
+	{CellClass::Unknown, "unknown"},
+	{CellClass::Free, "free"},
+	{CellClass::Occupied, "occupied"},
+	{CellClass::Conflict, "conflict"},
+	{CellClass::Disappeared, "disappeared"},
+	{CellClass::Appeared, "appeared"},
+}};
+/** The planes' spacing in z: enough for a depth buffer to keep them apart
+ * seen from tens of metres, too little to see. */
+constexpr double kPlaneSpacing = 0.001;
+
+const char* kPathName = "path";
+const mrpt::img::TColor kPathColor{0xE0, 0x20, 0x20};
+
+/** A plane of `image` (row 0 at yMin) and its transparency over cells
+ * [cx0, cx1] x [cy0, cy1] of `g`, unlit, at height z. */
+mrpt::opengl::CTexturedPlane::Ptr makePlane(
+	const GridGeometry& g, int cx0, int cx1, int cy0, int cy1, double z,
+	mrpt::img::CImage&& image, mrpt::img::CImage&& alpha)
+{
+	auto plane = mrpt::opengl::CTexturedPlane::Create(
+		static_cast<float>(g.xMin + cx0 * g.resolution),
+		static_cast<float>(g.xMin + (cx1 + 1) * g.resolution),
+		static_cast<float>(g.yMin + cy0 * g.resolution),
+		static_cast<float>(g.yMin + (cy1 + 1) * g.resolution));
+	plane->assignImage(std::move(image), std::move(alpha));
+	// Unlit, so that the colour on screen is the option's (MRPT 2.14's
+	// default; MRPT 2.5.8 lights planes).
+	plane->CRenderizableShaderTexturedTriangles::enableLight(false);
+	plane->CRenderizableShaderTriangles::enableLight(false);
+	plane->setLocation(0.0, 0.0, z);
+	return plane;
+}
+}  // namespace
+
+void CEvidentialGridMap2D::TRenderingOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& source, const std::string& section)
+{
+	// All or nothing: *this changes only when every value is valid.
+	TRenderingOptions o = *this;
+	detail::readEnum(source, section, "style", o.style);
+	detail::readColor(source, section, "freeColor", o.freeColor);
+	detail::readColor(source, section, "occupiedColor", o.occupiedColor);
+	detail::readColor(source, section, "unknownColor", o.unknownColor);
+	detail::readColor(source, section, "conflictColor", o.conflictColor);
+	detail::readColor(source, section, "appearedColor", o.appearedColor);
+	detail::readColor(source, section, "disappearedColor", o.disappearedColor);
+	detail::readBool(source, section, "showFree", o.showFree);
+	detail::readBool(source, section, "showOccupied", o.showOccupied);
+	detail::readBool(source, section, "showConflict", o.showConflict);
+	detail::readBool(source, section, "showMotion", o.showMotion);
+	detail::readBool(source, section, "showUnknown", o.showUnknown);
+	detail::readDouble(source, section, "height", o.height);
+	detail::throwIfInvalid(source, section, o.firstInvalid());
+	*this = o;
+}
+
+std::optional<TInvalidOption> CEvidentialGridMap2D::TRenderingOptions::firstInvalid()
+	const
+{
+	if (!(std::abs(height) <= 1000.0))  // NaN fails too
+		return TInvalidOption{"height", "within [-1000, 1000] m", height};
+	return std::nullopt;
+}
+
+void CEvidentialGridMap2D::TRenderingOptions::validate() const
+{
+	if (const auto bad = firstInvalid())
+		throw std::invalid_argument("renderOpts: " + bad->describe());
+}
+
+void CEvidentialGridMap2D::TRenderingOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& target, const std::string& section) const
+{
+	using detail::writeValue;
+	writeValue(target, section, "style", style, "Classes or Masses");
+	writeValue(target, section, "freeColor", freeColor, "#RRGGBB");
+	writeValue(target, section, "occupiedColor", occupiedColor, "#RRGGBB");
+	writeValue(target, section, "unknownColor", unknownColor, "#RRGGBB, pictures and showUnknown");
+	writeValue(target, section, "conflictColor", conflictColor, "#RRGGBB");
+	writeValue(target, section, "appearedColor", appearedColor, "#RRGGBB");
+	writeValue(target, section, "disappearedColor", disappearedColor, "#RRGGBB");
+	writeValue(target, section, "showFree", showFree, "3-D view");
+	writeValue(target, section, "showOccupied", showOccupied, "3-D view");
+	writeValue(target, section, "showConflict", showConflict, "3-D view");
+	writeValue(target, section, "showMotion", showMotion, "3-D view: appeared, disappeared");
+	writeValue(target, section, "showUnknown", showUnknown, "3-D view: false = transparent");
+	writeValue(target, section, "height", height, "m, z of the 3-D view's top plane");
+}
+
+void CEvidentialGridMap2D::TRenderingOptions::dumpToTextStream(std::ostream& out) const
+{
+	detail::dumpAsIni(*this, "renderOpts", out);
+}
+
+CEvidentialGridMap2D::CellClass CEvidentialGridMap2D::classOf(
+	std::size_t idx, bool withMotion) const
+{
+	switch (withMotion ? motionOf(idx) : Motion::None)
+	{
+		case Motion::Appeared: return CellClass::Appeared;
+		case Motion::Disappeared: return CellClass::Disappeared;
+		case Motion::None: break;
+	}
+	switch (decide(m_grid.read(idx)))
+	{
+		case Decision::Free: return CellClass::Free;
+		case Decision::Occupied: return CellClass::Occupied;
+		case Decision::Conflict: return CellClass::Conflict;
+		case Decision::Unknown: break;
+	}
+	return CellClass::Unknown;
+}
+
+CEvidentialGridMap2D::CellClass CEvidentialGridMap2D::classOfCell(double x, double y) const
+{
+	const GridGeometry& g = geometry();
+	if (!(x >= g.xMin && x < g.xMax() && y >= g.yMin && y < g.yMax()))
+		return CellClass::Unknown;  // NaN included
+	const int cx = g.cellX(x), cy = g.cellY(y);
+	return g.inside(cx, cy) ? classOf(g.index(cx, cy)) : CellClass::Unknown;
+}
+
+mrpt::img::TColor CEvidentialGridMap2D::TRenderingOptions::colorOf(CellClass c) const
+{
+	switch (c)
+	{
+		case CellClass::Free: return freeColor;
+		case CellClass::Occupied: return occupiedColor;
+		case CellClass::Conflict: return conflictColor;
+		case CellClass::Appeared: return appearedColor;
+		case CellClass::Disappeared: return disappearedColor;
+		case CellClass::Unknown: break;
+	}
+	return unknownColor;
+}
+
+void CEvidentialGridMap2D::getAsImage(mrpt::img::CImage& img) const
+{
+	const GridGeometry& g = geometry();
+	img.resize(
+		static_cast<std::size_t>(g.sizeX), static_cast<std::size_t>(g.sizeY),
+		mrpt::img::CH_RGB);
+	for (int row = 0; row < g.sizeY; ++row)
+	{
+		// CImage keeps colour pixels blue first (OpenCV's order).
+		auto* p = img.ptrLine<std::uint8_t>(static_cast<unsigned>(row));
+		const std::size_t first = g.index(0, g.sizeY - 1 - row);
+		for (int cx = 0; cx < g.sizeX; ++cx, p += 3)
+		{
+			const mrpt::img::TColor c =
+				renderingOptions.colorOf(classOf(first + static_cast<std::size_t>(cx)));
+			p[0] = c.B, p[1] = c.G, p[2] = c.R;
+		}
+	}
+}
+
+void CEvidentialGridMap2D::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const
+{
+	if (!genericMapParams.enableSaveAs3DObject) return;
+	const TRenderingOptions& ro = renderingOptions;
+	const GridGeometry& g = geometry();
+	const std::string name = "evidentialGrid.";
+
+	if (ro.style == RenderStyle::Masses)
+	{
+		mrpt::img::CImage image, alpha(
+			static_cast<unsigned>(g.sizeX), static_cast<unsigned>(g.sizeY),
+			mrpt::img::CH_GRAY);
+		getAsEvidentialImage(image);
+		image.flipVertical();  // the plane maps texture row 0 to yMin
+		for (int cy = 0; cy < g.sizeY; ++cy)
+			for (int cx = 0; cx < g.sizeX; ++cx)
+				alpha.at<std::uint8_t>(cx, cy) =
+					ro.showUnknown || m_grid.read(g.index(cx, cy)).unknown < 1.0 ? 255 : 0;
+		auto plane = makePlane(
+			g, 0, g.sizeX - 1, 0, g.sizeY - 1, ro.height, std::move(image), std::move(alpha));
+		plane->setName(name + "masses");
+		o.insert(plane);
+		return;
+	}
+
+	// Each class's cells and their bounding box, in one pass.
+	std::vector<CellClass> classes(g.cellCount());
+	struct Box
+	{
+		int cx0 = INT_MAX, cx1 = -1, cy0 = INT_MAX, cy1 = -1;
+	};
+	std::array<Box, kPlanes.size()> boxes{};
+	const auto slot = [](CellClass c) { return static_cast<std::size_t>(c); };
+	for (int cy = 0; cy < g.sizeY; ++cy)
+		for (int cx = 0; cx < g.sizeX; ++cx)
+		{
+			const std::size_t idx = g.index(cx, cy);
+			// Without the motion planes, moving cells show their decision.
+			const CellClass c = classOf(idx, ro.showMotion);
+			classes[idx] = c;
+			Box& b = boxes[slot(c)];
+			b.cx0 = std::min(b.cx0, cx), b.cx1 = std::max(b.cx1, cx);
+			b.cy0 = std::min(b.cy0, cy), b.cy1 = std::max(b.cy1, cy);
+		}
+
+	const auto shown = [&ro](CellClass c) {
+		switch (c)
+		{
+			case CellClass::Free: return ro.showFree;
+			case CellClass::Occupied: return ro.showOccupied;
+			case CellClass::Conflict: return ro.showConflict;
+			case CellClass::Appeared:
+			case CellClass::Disappeared: return ro.showMotion;
+			case CellClass::Unknown: break;
+		}
+		return ro.showUnknown;
+	};
+	double z = ro.height - kPlaneSpacing * (kPlanes.size() - 1);
+	for (const auto& [cls, suffix] : kPlanes)
+	{
+		const Box& b = boxes[slot(cls)];
+		if (shown(cls) && b.cx1 >= 0)
+		{
+			const unsigned w = static_cast<unsigned>(b.cx1 - b.cx0 + 1);
+			const unsigned h = static_cast<unsigned>(b.cy1 - b.cy0 + 1);
+			mrpt::img::CImage image(w, h, mrpt::img::CH_RGB), alpha(w, h, mrpt::img::CH_GRAY);
+			const mrpt::img::TColor c = ro.colorOf(cls);
+			for (unsigned row = 0; row < h; ++row)  // row 0 at the box's lowest y
+			{
+				auto* p = image.ptrLine<std::uint8_t>(row);
+				auto* a = alpha.ptrLine<std::uint8_t>(row);
+				const std::size_t first = g.index(b.cx0, b.cy0 + static_cast<int>(row));
+				for (unsigned x = 0; x < w; ++x, p += 3)
+				{
+					p[0] = c.B, p[1] = c.G, p[2] = c.R;
+					a[x] = classes[first + x] == cls ? 255 : 0;
+				}
+			}
+			auto plane = makePlane(g, b.cx0, b.cx1, b.cy0, b.cy1, z, std::move(image), std::move(alpha));
+			plane->setName(name + suffix);
+			o.insert(plane);
+		}
+		z += kPlaneSpacing;
+	}
+}
+
+void CEvidentialGridMap2D::saveAsScene(
+	const std::string& path3Dscene, const std::vector<mrpt::math::TPoint3D>& path) const
+{
+	mrpt::opengl::COpenGLScene scene;
+	auto map = mrpt::opengl::CSetOfObjects::Create();
+	map->setName("evidentialGrid");
+	getVisualizationInto(*map);
+	scene.insert(map);
+	if (path.size() >= 2)
+	{
+		auto lines = mrpt::opengl::CSetOfLines::Create();
+		lines->setName(kPathName);
+		lines->setColor_u8(kPathColor);
+		lines->setLineWidth(2.0f);
+		// Above the map's planes (renderingOptions.height), whatever the path's own z.
+		const double lift = renderingOptions.height + 0.01;
+		for (std::size_t i = 1; i < path.size(); ++i)
+			lines->appendLine(
+				path[i - 1].x, path[i - 1].y, std::max(path[i - 1].z, lift), path[i].x, path[i].y,
+				std::max(path[i].z, lift));
+		scene.insert(lines);
+	}
+	detail::writeFileAtomicallyByName(
+		path3Dscene, [&scene](const std::string& tmp) { return scene.saveToFile(tmp); });
+}
