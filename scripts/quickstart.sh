@@ -32,6 +32,8 @@ packages=(
   mrpt-apps mrpt-common
   libeigen3-dev libopencv-dev libgtest-dev libbenchmark-dev
   xvfb xauth x11-utils imagemagick
+  # the GUI end-to-end test (tests/e2e/rawlogviewer_gui.sh) clicks and pastes
+  xdotool xclip
   # the fleet recipe (doc/recipes/fleet.md)
   parallel
   # the Debian packages (scripts/build-deb.sh): dpkg-shlibdeps, and file,
