@@ -31,9 +31,9 @@ packages=(
   libmrpt-tclap-dev zlib1g-dev
   mrpt-apps mrpt-common
   libeigen3-dev libopencv-dev libgtest-dev libbenchmark-dev
-  # the GUI tests: a virtual display, driven with xdotool, screenshots read
-  # with ImageMagick
-  xvfb xauth x11-utils xdotool imagemagick
+  # the GUI tests: a virtual display, driven with xdotool (clicks) and
+  # xclip (pastes), screenshots read with ImageMagick
+  xvfb xauth x11-utils xdotool xclip imagemagick
   # the fleet recipe (doc/recipes/fleet.md)
   parallel
   # the Debian packages (scripts/build-deb.sh): dpkg-shlibdeps, and file,
