@@ -1,5 +1,5 @@
 /* How CEvidentialGridMap2D is drawn: the classes of cells and their colours,
- * the 3-D view's planes, the rendering options in .ini files, the legends of
+ * the 3-D view's objects, the rendering options in .ini files, the legends of
  * saved pictures, video frames and scene files. */
 
 #include <gtest/gtest.h>
@@ -9,6 +9,7 @@
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CSetOfLines.h>
 #include <mrpt/opengl/CSetOfObjects.h>
+#include <mrpt/opengl/CSetOfTriangles.h>
 #include <mrpt/opengl/CTexturedPlane.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
@@ -22,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "render/CellRectangles.h"
 #include "render/PictureLegend.h"
 #include "support/maps.h"
 #include "support/scans.h"
@@ -87,21 +89,29 @@ bool sameColor(const mrpt::img::TColor& a, const mrpt::img::TColor& b)
 	return a.R == b.R && a.G == b.G && a.B == b.B;
 }
 
-/** The planes of the map's 3-D view by name. */
-std::map<std::string, mrpt::opengl::CTexturedPlane::Ptr> planesOf(
-	const CEvidentialGridMap2D& map)
+/** The objects of the map's 3-D view by name. */
+std::map<std::string, mrpt::opengl::CRenderizable::Ptr> objectsOf(const CEvidentialGridMap2D& map)
 {
 	mrpt::opengl::CSetOfObjects set;
 	map.getVisualizationInto(set);
-	std::map<std::string, mrpt::opengl::CTexturedPlane::Ptr> planes;
-	for (const auto& o : set)
+	std::map<std::string, mrpt::opengl::CRenderizable::Ptr> objects;
+	for (const auto& o : set) objects[o->getName()] = o;
+	EXPECT_EQ(objects.size(), set.size()) << "two objects share a name";
+	return objects;
+}
+
+/** The class objects of the map's 3-D view by name. */
+std::map<std::string, mrpt::opengl::CSetOfTriangles::Ptr> trianglesOf(
+	const CEvidentialGridMap2D& map)
+{
+	std::map<std::string, mrpt::opengl::CSetOfTriangles::Ptr> sets;
+	for (const auto& [name, o] : objectsOf(map))
 	{
-		auto plane = std::dynamic_pointer_cast<mrpt::opengl::CTexturedPlane>(o);
-		EXPECT_TRUE(plane) << "not a textured plane: " << o->GetRuntimeClass()->className;
-		if (plane) planes[plane->getName()] = plane;
+		auto t = std::dynamic_pointer_cast<mrpt::opengl::CSetOfTriangles>(o);
+		EXPECT_TRUE(t) << name << " is a " << o->GetRuntimeClass()->className;
+		if (t) sets[name] = t;
 	}
-	EXPECT_EQ(planes.size(), set.size()) << "two planes share a name";
-	return planes;
+	return sets;
 }
 }  // namespace
 
@@ -137,58 +147,74 @@ TEST(MapRendering, ThePictureColoursEachCellByItsClass)
 	EXPECT_EQ(map.classOfCell(std::nan(""), 0.0), CellClass::Unknown);
 }
 
-TEST(MapRendering, TheThreeDViewHasOneUnlitPlanePerClassShown)
+TEST(MapRendering, TheThreeDViewHasOneUnlitObjectPerClassShown)
 {
 	const CEvidentialGridMap2D map = movingWallMap();
-	const auto planes = planesOf(map);
-	// Unknown cells are transparent by default: no plane for them.
+	const auto sets = trianglesOf(map);
+	// Unknown cells are transparent by default: no object for them.
 	const std::vector<std::pair<std::string, CellClass>> expected{
 		{"evidentialGrid.free", CellClass::Free},
 		{"evidentialGrid.occupied", CellClass::Occupied},
 		{"evidentialGrid.disappeared", CellClass::Disappeared},
 		{"evidentialGrid.appeared", CellClass::Appeared}};
-	ASSERT_EQ(planes.size(), expected.size());
+	ASSERT_EQ(sets.size(), expected.size());
 
 	const GridGeometry& g = map.geometry();
-	double previousZ = -1e9;
+	const double cellArea = g.resolution * g.resolution;
 	for (const auto& [name, cls] : expected)
 	{
-		ASSERT_EQ(planes.count(name), 1u) << name;
-		const auto& plane = planes.at(name);
-		EXPECT_FALSE(plane->CRenderizableShaderTexturedTriangles::isLightEnabled()) << name;
-		// Later planes lie above earlier ones, all at or under `height`.
-		EXPECT_GT(plane->getPoseZ(), previousZ) << name;
-		EXPECT_LE(plane->getPoseZ(), map.renderingOptions.height + 1e-9) << name;
-		previousZ = plane->getPoseZ();
-
-		// The plane covers the bounding box of its cells; a texel is opaque
-		// exactly where the cell is of the plane's class, in its colour.
-		float xMin, xMax, yMin, yMax;
-		plane->getPlaneCorners(xMin, xMax, yMin, yMax);
-		const int cx0 = g.cellX(xMin + 0.5 * g.resolution);
-		const int cy0 = g.cellY(yMin + 0.5 * g.resolution);
-		const mrpt::img::CImage& texture = plane->getTextureImage();
-		const mrpt::img::CImage& alpha = plane->getTextureAlphaImage();
-		ASSERT_NEAR((xMax - xMin) / g.resolution, texture.getWidth(), 1e-3) << name;
-		ASSERT_NEAR((yMax - yMin) / g.resolution, texture.getHeight(), 1e-3) << name;
-		std::size_t opaque = 0;
-		bool touchesLeft = false, touchesBottom = false;
-		for (unsigned ty = 0; ty < texture.getHeight(); ++ty)
-			for (unsigned tx = 0; tx < texture.getWidth(); ++tx)
+		ASSERT_EQ(sets.count(name), 1u) << name;
+		const auto& set = sets.at(name);
+		EXPECT_FALSE(set->isLightEnabled()) << name;
+		// The triangles cover the class's cells, flat at `height`, in the
+		// class's colour: each triangle's centroid lies in such a cell, and
+		// together they have the cells' area (and their seams).
+		double area = 0.0;
+		for (std::size_t i = 0; i < set->getTrianglesCount(); ++i)
+		{
+			mrpt::opengl::TTriangle t;
+			set->getTriangle(i, t);
+			double cx = 0, cy = 0;
+			for (int k = 0; k < 3; ++k)
 			{
-				const int cx = cx0 + static_cast<int>(tx), cy = cy0 + static_cast<int>(ty);
-				const bool mine = map.classOfCell(g.cellCenterX(cx), g.cellCenterY(cy)) == cls;
-				ASSERT_EQ(alpha.at<std::uint8_t>(tx, ty), mine ? 255 : 0)
-					<< name << " at cell (" << cx << ", " << cy << ")";
-				if (!mine) continue;
-				++opaque;
-				touchesLeft |= tx == 0;
-				touchesBottom |= ty == 0;
-				ASSERT_TRUE(sameColor(pixel(texture, tx, ty), map.renderingOptions.colorOf(cls)));
+				ASSERT_FLOAT_EQ(t.z(k), static_cast<float>(map.renderingOptions.height));
+				ASSERT_TRUE(sameColor(
+					mrpt::img::TColor(t.r(k), t.g(k), t.b(k)), map.renderingOptions.colorOf(cls)))
+					<< name;
+				cx += t.x(k) / 3.0, cy += t.y(k) / 3.0;
 			}
-		EXPECT_EQ(opaque, classCounts(map).at(cls)) << name;
-		EXPECT_TRUE(touchesLeft && touchesBottom) << name << ": not the cells' bounding box";
+			ASSERT_EQ(map.classOfCell(cx, cy), cls) << name << " at (" << cx << ", " << cy << ")";
+			area += 0.5 * std::abs(
+							  (t.x(1) - t.x(0)) * (t.y(2) - t.y(0)) -
+							  (t.x(2) - t.x(0)) * (t.y(1) - t.y(0)));
+		}
+		// Each rectangle overlaps its neighbours by a fiftieth of a cell (no
+		// cracks at T-junctions): at most 1.04^2 times the area of its cells.
+		const double cells = static_cast<double>(classCounts(map).at(cls));
+		EXPECT_GE(area / cellArea, cells - 1e-3) << name;
+		EXPECT_LE(area / cellArea, cells * 1.04 * 1.04 + 1e-3) << name;
 	}
+}
+
+TEST(MapRendering, RectanglesCoverExactlyTheCellsOfALabel)
+{
+	// A pattern with runs that continue, split and join from row to row.
+	const int sx = 13, sy = 11;
+	std::vector<std::uint8_t> labels(sx * sy);
+	for (int cy = 0; cy < sy; ++cy)
+		for (int cx = 0; cx < sx; ++cx)
+			labels[cy * sx + cx] = static_cast<std::uint8_t>(((cx * 7 + cy * 3) / 5 + (cx > 8)) % 3);
+	for (std::uint8_t label = 0; label < 4; ++label)
+	{
+		std::vector<int> cover(labels.size(), 0);
+		for (const auto& r : detail::rectanglesOf(labels, sx, sy, label))
+			for (int cy = r.cy0; cy <= r.cy1; ++cy)
+				for (int cx = r.cx0; cx <= r.cx1; ++cx) ++cover[cy * sx + cx];
+		for (std::size_t i = 0; i < labels.size(); ++i)
+			ASSERT_EQ(cover[i], labels[i] == label ? 1 : 0) << "label " << int(label) << ", cell " << i;
+	}
+	// A uniform grid is one rectangle.
+	EXPECT_EQ(detail::rectanglesOf(std::vector<std::uint8_t>(sx * sy, 1), sx, sy, 1).size(), 1u);
 }
 
 TEST(MapRendering, OptionsChooseWhatTheThreeDViewShows)
@@ -197,33 +223,42 @@ TEST(MapRendering, OptionsChooseWhatTheThreeDViewShows)
 	auto& ro = map.renderingOptions;
 	ro.showUnknown = true;
 	ro.showFree = false;
-	auto planes = planesOf(map);
-	EXPECT_EQ(planes.count("evidentialGrid.unknown"), 1u);
-	EXPECT_EQ(planes.count("evidentialGrid.free"), 0u);
+	auto sets = trianglesOf(map);
+	EXPECT_EQ(sets.count("evidentialGrid.unknown"), 1u);
+	EXPECT_EQ(sets.count("evidentialGrid.free"), 0u);
 
-	// Without the motion planes, moving cells join their decision's plane.
+	// Without the motion objects, moving cells join their decision's object:
+	// no cell left out.
 	ro = CEvidentialGridMap2D::TRenderingOptions();
 	ro.showMotion = false;
-	planes = planesOf(map);
-	EXPECT_EQ(planes.count("evidentialGrid.appeared"), 0u);
-	EXPECT_EQ(planes.count("evidentialGrid.disappeared"), 0u);
-	std::size_t opaque = 0;
-	for (const auto& [name, plane] : planes)
-	{
-		const mrpt::img::CImage& a = plane->getTextureAlphaImage();
-		for (unsigned y = 0; y < a.getHeight(); ++y)
-			for (unsigned x = 0; x < a.getWidth(); ++x) opaque += a.at<std::uint8_t>(x, y) == 255;
-	}
+	sets = trianglesOf(map);
+	EXPECT_EQ(sets.count("evidentialGrid.appeared"), 0u);
+	EXPECT_EQ(sets.count("evidentialGrid.disappeared"), 0u);
+	double area = 0.0;
+	for (const auto& [name, set] : sets)
+		for (std::size_t i = 0; i < set->getTrianglesCount(); ++i)
+		{
+			mrpt::opengl::TTriangle t;
+			set->getTriangle(i, t);
+			area += 0.5 * std::abs(
+							  (t.x(1) - t.x(0)) * (t.y(2) - t.y(0)) -
+							  (t.x(2) - t.x(0)) * (t.y(1) - t.y(0)));
+		}
 	const auto counts = map.countDecisions();
-	EXPECT_EQ(opaque, counts.free + counts.occupied + counts.conflict);
+	const double res = map.getResolution();
+	const double decided = static_cast<double>(counts.free + counts.occupied + counts.conflict);
+	EXPECT_GE(area / (res * res), decided - 1e-3);
+	EXPECT_LE(area / (res * res), decided * 1.04 * 1.04 + 1e-3);
 
 	// The masses: one plane, vacuous cells transparent.
 	ro = CEvidentialGridMap2D::TRenderingOptions();
 	ro.style = RenderStyle::Masses;
-	planes = planesOf(map);
-	ASSERT_EQ(planes.size(), 1u);
-	ASSERT_EQ(planes.count("evidentialGrid.masses"), 1u);
-	const auto& plane = planes.at("evidentialGrid.masses");
+	const auto objects = objectsOf(map);
+	ASSERT_EQ(objects.size(), 1u);
+	const auto plane =
+		std::dynamic_pointer_cast<mrpt::opengl::CTexturedPlane>(objects.begin()->second);
+	ASSERT_TRUE(plane);
+	EXPECT_EQ(plane->getName(), "evidentialGrid.masses");
 	EXPECT_EQ(plane->getTextureImage().getWidth(), static_cast<std::size_t>(map.getSizeX()));
 	const mrpt::img::CImage& alpha = plane->getTextureAlphaImage();
 	std::size_t seen = 0;

@@ -3,11 +3,13 @@
 # (replayed by rawmap_dialog.cpp on the synthetic room, plugin loaded at run
 # time): it creates the evidential map next to the points map and fills it;
 # the saved files are checked, and the rawlog holding the map is left in the
-# scratch folder for the rawlog-edit and RawLogViewer tests.
-# Usage: rawmap_dialog.sh <plugin.so> <rawmap_dialog> <rawlogs dir> <scratch dir>
+# scratch folder for the rawlog-edit and RawLogViewer tests, with the map's
+# scene as `evgrid export --scene` writes it (the odometry as its path), for
+# SceneViewer3D in the GUI test.
+# Usage: rawmap_dialog.sh <plugin.so> <rawmap_dialog> <rawlogs dir> <scratch dir> <evgrid> <evgrid_check>
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
-[ $# -eq 4 ] || fail "usage: $0 <plugin.so> <rawmap_dialog> <rawlogs dir> <scratch dir>"
-plugin=$1 rawmap_dialog=$2 rawlogs=$3 scratch=$4
+[ $# -eq 6 ] || fail "usage: $0 <plugin.so> <rawmap_dialog> <rawlogs dir> <scratch dir> <evgrid> <evgrid_check>"
+plugin=$1 rawmap_dialog=$2 rawlogs=$3 scratch=$4 evgrid=$5 evgrid_check=$6
 
 rm -rf "$scratch"
 mkdir -p "$scratch"
@@ -25,3 +27,10 @@ check_evidential_files "${info%_info.txt}" 20000 800
 only_file "$scratch/rawmap_mrpt__maps__CSimplePointsMap_*.txt" >/dev/null
 [ -s "$scratch/map.rawlog" ] || fail "no rawlog written"
 ok "the Raw-map .ini builds the evidential map; $scratch/map.rawlog holds it"
+
+"$evgrid_check" odometry-path "$rawlogs/room_door_box.rawlog" "$scratch/odometry.txt" ||
+	fail "cannot write the odometry path"
+"$evgrid" export -q "${info%_info.txt}.evgrid" --scene "$scratch/map.3Dscene" --path "$scratch/odometry.txt" ||
+	fail "evgrid export --scene failed"
+[ -s "$scratch/map.3Dscene" ] || fail "no scene written"
+ok "evgrid export wrote $scratch/map.3Dscene"

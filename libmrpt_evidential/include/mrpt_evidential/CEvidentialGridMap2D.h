@@ -320,17 +320,16 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	/** One line: geometry, insertions and counts per decision. */
 	std::string asString() const override;
 	/** The map at its place, as renderingOptions says: with
-	 * RenderStyle::Classes, one textured plane per class of cell that the map
-	 * holds and the options show, named "evidentialGrid.free",
+	 * RenderStyle::Classes, one set of unlit triangles (CSetOfTriangles) per
+	 * class of cell that the map holds and the options show, named
+	 * "evidentialGrid.unknown", "evidentialGrid.free",
 	 * "evidentialGrid.occupied", "evidentialGrid.conflict",
-	 * "evidentialGrid.unknown", "evidentialGrid.disappeared" and
-	 * "evidentialGrid.appeared", each covering the cells of its class
-	 * (transparent elsewhere) in the bounding box of those cells, unlit so
-	 * that its colour is the option's; with RenderStyle::Masses, one plane
-	 * "evidentialGrid.masses" with getAsEvidentialImage(). The planes lie
-	 * just under renderingOptions.height, in this order, 1 mm apart, so that
-	 * later ones and whatever lies at that height draw over earlier ones.
-	 * Nothing when genericMapParams.enableSaveAs3DObject is false. */
+	 * "evidentialGrid.disappeared" and "evidentialGrid.appeared", covering
+	 * exactly the cells of its class in the option's colour; with
+	 * RenderStyle::Masses, one textured plane "evidentialGrid.masses" with
+	 * getAsEvidentialImage(), never-seen cells transparent unless
+	 * showUnknown. Everything lies at z = renderingOptions.height. Nothing
+	 * when genericMapParams.enableSaveAs3DObject is false. */
 	void getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const override;
 	/** 0: the map takes no part in point matching. */
 	float compute3DMatchingRatio(
@@ -546,15 +545,15 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 		/** `disappearedColor`, default #00AAAA (teal). */
 		mrpt::img::TColor disappearedColor{0x00, 0xAA, 0xAA};
 		/** `showFree`, `showOccupied`, `showConflict`, `showMotion`: whether
-		 * the 3-D view has the class's plane, default true; without the
-		 * motion planes, moving cells show their decision. `showUnknown`,
+		 * the 3-D view has the class's object, default true; without the
+		 * motion objects, moving cells show their decision. `showUnknown`,
 		 * default false: unknown cells are transparent, as in MRPT's grid.
 		 * The pictures draw every class. */
 		bool showFree = true, showOccupied = true, showConflict = true,
 			 showMotion = true, showUnknown = false;
-		/** `height`: z of the 3-D view's top plane, metres, within
-		 * [-1000, 1000], default -0.001: just under z = 0, where 2-D scans'
-		 * points and paths lie, so that they stay visible over the map. */
+		/** `height`: z of the 3-D view, metres, within [-1000, 1000], default
+		 * -0.001: just under z = 0, where 2-D scans' points and paths lie, so
+		 * that they stay visible over the map. */
 		double height = -0.001;
 
 		/** Reads the keys above from `section`; absent keys keep their value;

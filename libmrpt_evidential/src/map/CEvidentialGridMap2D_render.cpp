@@ -6,12 +6,12 @@
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CSetOfLines.h>
 #include <mrpt/opengl/CSetOfObjects.h>
+#include <mrpt/opengl/CSetOfTriangles.h>
 #include <mrpt/opengl/CTexturedPlane.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 
 #include <algorithm>
 #include <array>
-#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -19,14 +19,15 @@
 
 #include <mrpt_evidential/support/AtomicFile.h>
 #include "map/ConfigReading.h"
+#include "render/CellRectangles.h"
 
 using namespace mrpt_evidential;
 using CellClass = CEvidentialGridMap2D::CellClass;
 
 namespace
 {
-/** The planes of the 3-D view, bottom first, with their names' suffixes. */
-constexpr std::array<std::pair<CellClass, const char*>, 6> kPlanes{{
+/** The objects of the 3-D view, with their names' suffixes. */
+constexpr std::array<std::pair<CellClass, const char*>, 6> kObjects{{
 	{CellClass::Unknown, "unknown"},
 	{CellClass::Free, "free"},
 	{CellClass::Occupied, "occupied"},
@@ -34,24 +35,17 @@ constexpr std::array<std::pair<CellClass, const char*>, 6> kPlanes{{
 	{CellClass::Disappeared, "disappeared"},
 	{CellClass::Appeared, "appeared"},
 }};
-/** The planes' spacing in z: enough for a depth buffer to keep them apart
- * seen from tens of metres, too little to see. */
-constexpr double kPlaneSpacing = 0.001;
-
 const char* kPathName = "path";
 const mrpt::img::TColor kPathColor{0xE0, 0x20, 0x20};
 
-/** A plane of `image` (row 0 at yMin) and its transparency over cells
- * [cx0, cx1] x [cy0, cy1] of `g`, unlit, at height z. */
+/** A plane of `image` (row 0 at yMin) and its transparency over the grid
+ * `g`, unlit, at height z. */
 mrpt::opengl::CTexturedPlane::Ptr makePlane(
-	const GridGeometry& g, int cx0, int cx1, int cy0, int cy1, double z,
-	mrpt::img::CImage&& image, mrpt::img::CImage&& alpha)
+	const GridGeometry& g, double z, mrpt::img::CImage&& image, mrpt::img::CImage&& alpha)
 {
 	auto plane = mrpt::opengl::CTexturedPlane::Create(
-		static_cast<float>(g.xMin + cx0 * g.resolution),
-		static_cast<float>(g.xMin + (cx1 + 1) * g.resolution),
-		static_cast<float>(g.yMin + cy0 * g.resolution),
-		static_cast<float>(g.yMin + (cy1 + 1) * g.resolution));
+		static_cast<float>(g.xMin), static_cast<float>(g.xMax()), static_cast<float>(g.yMin),
+		static_cast<float>(g.yMax()));
 	plane->assignImage(std::move(image), std::move(alpha));
 	// Unlit, so that the colour on screen is the option's (MRPT 2.14's
 	// default; MRPT 2.5.8 lights planes).
@@ -202,33 +196,18 @@ void CEvidentialGridMap2D::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) 
 			for (int cx = 0; cx < g.sizeX; ++cx)
 				alpha.at<std::uint8_t>(cx, cy) =
 					ro.showUnknown || m_grid.read(g.index(cx, cy)).unknown < 1.0 ? 255 : 0;
-		auto plane = makePlane(
-			g, 0, g.sizeX - 1, 0, g.sizeY - 1, ro.height, std::move(image), std::move(alpha));
+		auto plane = makePlane(g, ro.height, std::move(image), std::move(alpha));
 		plane->setName(name + "masses");
 		o.insert(plane);
 		return;
 	}
 
-	// Each class's cells and their bounding box, in one pass.
-	std::vector<CellClass> classes(g.cellCount());
-	struct Box
-	{
-		int cx0 = INT_MAX, cx1 = -1, cy0 = INT_MAX, cy1 = -1;
-	};
-	std::array<Box, kPlanes.size()> boxes{};
-	const auto slot = [](CellClass c) { return static_cast<std::size_t>(c); };
-	for (int cy = 0; cy < g.sizeY; ++cy)
-		for (int cx = 0; cx < g.sizeX; ++cx)
-		{
-			const std::size_t idx = g.index(cx, cy);
-			// Without the motion planes, moving cells show their decision.
-			const CellClass c = classOf(idx, ro.showMotion);
-			classes[idx] = c;
-			Box& b = boxes[slot(c)];
-			b.cx0 = std::min(b.cx0, cx), b.cx1 = std::max(b.cx1, cx);
-			b.cy0 = std::min(b.cy0, cy), b.cy1 = std::max(b.cy1, cy);
-		}
-
+	// Each class as its own opaque triangles over exactly its cells: MRPT
+	// draws nearer objects first, and the transparent texels of a plane over
+	// the whole grid would hide the classes drawn after it.
+	std::vector<std::uint8_t> classes(g.cellCount());
+	for (std::size_t idx = 0; idx < classes.size(); ++idx)
+		classes[idx] = static_cast<std::uint8_t>(classOf(idx, ro.showMotion));
 	const auto shown = [&ro](CellClass c) {
 		switch (c)
 		{
@@ -241,32 +220,40 @@ void CEvidentialGridMap2D::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) 
 		}
 		return ro.showUnknown;
 	};
-	double z = ro.height - kPlaneSpacing * (kPlanes.size() - 1);
-	for (const auto& [cls, suffix] : kPlanes)
+	const float z = static_cast<float>(ro.height);
+	for (const auto& [cls, suffix] : kObjects)
 	{
-		const Box& b = boxes[slot(cls)];
-		if (shown(cls) && b.cx1 >= 0)
+		if (!shown(cls)) continue;
+		const auto rects = detail::rectanglesOf(
+			classes, g.sizeX, g.sizeY, static_cast<std::uint8_t>(cls));
+		if (rects.empty()) continue;
+		auto triangles = mrpt::opengl::CSetOfTriangles::Create();
+		triangles->setName(name + suffix);
+		// Unlit, so that the colour on screen is the option's.
+		triangles->enableLight(false);
+		triangles->reserve(2 * rects.size());
+		const mrpt::img::TColor c = ro.colorOf(cls);
+		// Rectangles meet at T-junctions, where rasterization leaves cracks
+		// of a pixel: each overlaps its neighbours by a fiftieth of a cell.
+		const double seam = 0.02 * g.resolution;
+		for (const auto& r : rects)
 		{
-			const unsigned w = static_cast<unsigned>(b.cx1 - b.cx0 + 1);
-			const unsigned h = static_cast<unsigned>(b.cy1 - b.cy0 + 1);
-			mrpt::img::CImage image(w, h, mrpt::img::CH_RGB), alpha(w, h, mrpt::img::CH_GRAY);
-			const mrpt::img::TColor c = ro.colorOf(cls);
-			for (unsigned row = 0; row < h; ++row)  // row 0 at the box's lowest y
+			const auto x0 = static_cast<float>(g.xMin + r.cx0 * g.resolution - seam);
+			const auto x1 = static_cast<float>(g.xMin + (r.cx1 + 1) * g.resolution + seam);
+			const auto y0 = static_cast<float>(g.yMin + r.cy0 * g.resolution - seam);
+			const auto y1 = static_cast<float>(g.yMin + (r.cy1 + 1) * g.resolution + seam);
+			for (const auto& [p, q, w] :
+				 {std::array{mrpt::math::TPoint3Df(x0, y0, z), mrpt::math::TPoint3Df(x1, y0, z),
+							 mrpt::math::TPoint3Df(x1, y1, z)},
+				  std::array{mrpt::math::TPoint3Df(x0, y0, z), mrpt::math::TPoint3Df(x1, y1, z),
+							 mrpt::math::TPoint3Df(x0, y1, z)}})
 			{
-				auto* p = image.ptrLine<std::uint8_t>(row);
-				auto* a = alpha.ptrLine<std::uint8_t>(row);
-				const std::size_t first = g.index(b.cx0, b.cy0 + static_cast<int>(row));
-				for (unsigned x = 0; x < w; ++x, p += 3)
-				{
-					p[0] = c.B, p[1] = c.G, p[2] = c.R;
-					a[x] = classes[first + x] == cls ? 255 : 0;
-				}
+				mrpt::opengl::TTriangle t(p, q, w);
+				t.setColor(c);
+				triangles->insertTriangle(t);
 			}
-			auto plane = makePlane(g, b.cx0, b.cx1, b.cy0, b.cy1, z, std::move(image), std::move(alpha));
-			plane->setName(name + suffix);
-			o.insert(plane);
 		}
-		z += kPlaneSpacing;
+		o.insert(triangles);
 	}
 }
 
