@@ -83,14 +83,6 @@ unsigned rowOf(const CEvidentialGridMap2D& map, int cy)
 	return static_cast<unsigned>(map.getSizeY() - 1 - cy);
 }
 
-std::set<std::string> filesIn(const fs::path& dir)
-{
-	std::set<std::string> names;
-	for (const auto& e : fs::directory_iterator(dir))
-		names.insert(e.path().filename().string());
-	return names;
-}
-
 std::string readText(const fs::path& path)
 {
 	std::ifstream f(path, std::ios::binary);
@@ -269,7 +261,7 @@ TEST(MapPictures, RosMapFiles)
 	const fs::path dir = test::scratchDir("map_pictures", "ros");
 	const CEvidentialGridMap2D map = scannedMap();
 	map.saveAsROSMap((dir / "office").string());
-	EXPECT_EQ(filesIn(dir), (std::set<std::string>{"office.pgm", "office.yaml"}));
+	EXPECT_EQ(test::filesIn(dir), (std::set<std::string>{"office.pgm", "office.yaml"}));
 
 	std::ifstream pgm(dir / "office.pgm", std::ios::binary);
 	std::string magic, comment;
@@ -314,7 +306,7 @@ TEST(MapPictures, SavedRepresentationWritesEightFilesAndNoTemporary)
 	const std::string prefix = (dir / "run1").string();
 	map.saveMetricMapRepresentationToFile(prefix);
 	EXPECT_EQ(
-		filesIn(dir),
+		test::filesIn(dir),
 		(std::set<std::string>{
 			"run1_map.png", "run1_evidential.png", "run1_betp.png", "run1_conflict.png",
 			"run1_motion.png", "run1_info.txt", "run1.evgrid", "run1.3Dscene"}));
@@ -343,7 +335,7 @@ TEST(MapPictures, SavedRepresentationWritesEightFilesAndNoTemporary)
 
 	// Writing again replaces the files, still without leftovers.
 	map.saveMetricMapRepresentationToFile(prefix);
-	EXPECT_EQ(filesIn(dir).size(), 8u);
+	EXPECT_EQ(test::filesIn(dir).size(), 8u);
 }
 
 TEST(MapPictures, FailedWritesThrowAndLeaveNothing)
@@ -373,7 +365,7 @@ TEST(MapPictures, FailedWritesThrowAndLeaveNothing)
 	// The pictures and the scene came first and are complete; nothing else
 	// is left.
 	EXPECT_EQ(
-		filesIn(dir),
+		test::filesIn(dir),
 		(std::set<std::string>{
 			"y_map.png", "y_evidential.png", "y_betp.png", "y_conflict.png", "y_motion.png",
 			"y.3Dscene", "y_info.txt"}));

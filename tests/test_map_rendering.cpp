@@ -58,11 +58,19 @@ CEvidentialGridMap2D movingWallMap()
 	return map;
 }
 
-std::set<std::string> filesIn(const fs::path& dir)
+/** The area a set of triangles covers (the triangles flat in z). */
+double areaOf(const mrpt::opengl::CSetOfTriangles& set)
 {
-	std::set<std::string> names;
-	for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
-	return names;
+	double area = 0.0;
+	for (std::size_t i = 0; i < set.getTrianglesCount(); ++i)
+	{
+		mrpt::opengl::TTriangle t;
+		set.getTriangle(i, t);
+		area += 0.5 * std::abs(
+						  (t.x(1) - t.x(0)) * (t.y(2) - t.y(0)) -
+						  (t.x(2) - t.x(0)) * (t.y(1) - t.y(0)));
+	}
+	return area;
 }
 
 /** The map's cells counted by class. */
@@ -169,7 +177,6 @@ TEST(MapRendering, TheThreeDViewHasOneUnlitObjectPerClassShown)
 		// The triangles cover the class's cells, flat at `height`, in the
 		// class's colour: each triangle's centroid lies in such a cell, and
 		// together they have the cells' area (and their seams).
-		double area = 0.0;
 		for (std::size_t i = 0; i < set->getTrianglesCount(); ++i)
 		{
 			mrpt::opengl::TTriangle t;
@@ -184,10 +191,8 @@ TEST(MapRendering, TheThreeDViewHasOneUnlitObjectPerClassShown)
 				cx += t.x(k) / 3.0, cy += t.y(k) / 3.0;
 			}
 			ASSERT_EQ(map.classOfCell(cx, cy), cls) << name << " at (" << cx << ", " << cy << ")";
-			area += 0.5 * std::abs(
-							  (t.x(1) - t.x(0)) * (t.y(2) - t.y(0)) -
-							  (t.x(2) - t.x(0)) * (t.y(1) - t.y(0)));
 		}
+		const double area = areaOf(*set);
 		// Each rectangle overlaps its neighbours by a fiftieth of a cell (no
 		// cracks at T-junctions): at most 1.04^2 times the area of its cells.
 		const double cells = static_cast<double>(classCounts(map).at(cls));
@@ -235,15 +240,7 @@ TEST(MapRendering, OptionsChooseWhatTheThreeDViewShows)
 	EXPECT_EQ(sets.count("evidentialGrid.appeared"), 0u);
 	EXPECT_EQ(sets.count("evidentialGrid.disappeared"), 0u);
 	double area = 0.0;
-	for (const auto& [name, set] : sets)
-		for (std::size_t i = 0; i < set->getTrianglesCount(); ++i)
-		{
-			mrpt::opengl::TTriangle t;
-			set->getTriangle(i, t);
-			area += 0.5 * std::abs(
-							  (t.x(1) - t.x(0)) * (t.y(2) - t.y(0)) -
-							  (t.x(2) - t.x(0)) * (t.y(1) - t.y(0)));
-		}
+	for (const auto& [name, set] : sets) area += areaOf(*set);
 	const auto counts = map.countDecisions();
 	const double res = map.getResolution();
 	const double decided = static_cast<double>(counts.free + counts.occupied + counts.conflict);
@@ -383,7 +380,7 @@ TEST(MapRendering, SceneFilesHoldTheMapAndThePath)
 	const CEvidentialGridMap2D map = movingWallMap();
 	const std::string file = (dir / "run.3Dscene").string();
 	map.saveAsScene(file, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0.2}});
-	EXPECT_EQ(filesIn(dir), (std::set<std::string>{"run.3Dscene"}));
+	EXPECT_EQ(test::filesIn(dir), (std::set<std::string>{"run.3Dscene"}));
 
 	mrpt::opengl::COpenGLScene scene;
 	ASSERT_TRUE(scene.loadFromFile(file));
@@ -403,5 +400,5 @@ TEST(MapRendering, SceneFilesHoldTheMapAndThePath)
 	ASSERT_TRUE(scene.loadFromFile(file));
 	EXPECT_FALSE(scene.getByName("path"));
 	EXPECT_THROW(map.saveAsScene((dir / "missing" / "x.3Dscene").string()), std::runtime_error);
-	EXPECT_EQ(filesIn(dir), (std::set<std::string>{"run.3Dscene"}));
+	EXPECT_EQ(test::filesIn(dir), (std::set<std::string>{"run.3Dscene"}));
 }

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <functional>
 #include <random>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
@@ -107,6 +108,15 @@ inline std::filesystem::path scratchDir(const std::string& suite, const std::str
 	return dir;
 }
 #endif
+
+/** The names of the entries of a directory. */
+inline std::set<std::string> filesIn(const std::filesystem::path& dir)
+{
+	std::set<std::string> names;
+	for (const auto& e : std::filesystem::directory_iterator(dir))
+		names.insert(e.path().filename().string());
+	return names;
+}
 
 }  // namespace mrpt_evidential::test
 
