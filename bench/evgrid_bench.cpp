@@ -218,6 +218,49 @@ void ourInsertMapSize(benchmark::State& state, double halfSize)
 	insertionLoop(state, *map, ScanKind::Stock);
 }
 
+/** A straight path along +x, 0.5 m a scan, from a grid of 10 x 10 m (or,
+ * `presized`, one that holds the whole path from the start): the cost of
+ * growing the grid as a long run does. */
+template <typename Map>
+void pathLoop(benchmark::State& state, Map& map)
+{
+	std::size_t i = 0;
+	for (auto _ : state)
+	{
+		state.PauseTiming();
+		const CObservation2DRangeScan scan = scanAt(ScanKind::Stock, i);
+		const CPose3D pose(0.5 * static_cast<double>(i), 0.0, 0.0, 0.0, 0.0, 0.0);
+		state.ResumeTiming();
+		map.insertObservation(scan, pose);
+		++i;
+	}
+}
+
+/** The extent a path of kInsertions scans reaches, with the stock scan's
+ * range around it. */
+double pathLength() { return 0.5 * kInsertions + maxRangeOf(ScanKind::Stock) + 1.0; }
+
+void mrptPath(benchmark::State& state, bool presized)
+{
+	const double r = maxRangeOf(ScanKind::Stock) + 1.0;
+	mrpt::maps::COccupancyGridMap2D map(
+		-5.0, presized ? pathLength() : 5.0, presized ? -r : -5.0, presized ? r : 5.0, 0.05);
+	map.insertionOptions.maxDistanceInsertion = static_cast<float>(maxRangeOf(ScanKind::Stock));
+	map.insertionOptions.wideningBeamsWithDistance = true;
+	pathLoop(state, map);
+}
+
+void ourPath(benchmark::State& state, bool presized)
+{
+	auto map = ourMap(ScanKind::Stock, 0.05, OurOptions{}, 5.0);
+	if (presized)
+	{
+		const double r = maxRangeOf(ScanKind::Stock) + 1.0;
+		map->setSize(-5.0, pathLength(), -r, r, 0.05);
+	}
+	pathLoop(state, *map);
+}
+
 /** Both maps built from the same 200 insertions, then one scan scored per
  * iteration at the next pose (the likelihood caches warm up first). */
 template <typename Map>
@@ -376,6 +419,14 @@ void registerCases()
 		[](benchmark::State& s) { ourInsertMapSize(s, 20.0); }, true);
 	add("ours/mapsize/400m/stock/0.05m",
 		[](benchmark::State& s) { ourInsertMapSize(s, 200.0); }, true);
+	for (const bool presized : {false, true})
+	{
+		const std::string grid = presized ? "presized" : "growing";
+		add("mrpt/path/" + grid + "/stock/0.05m",
+			[=](benchmark::State& s) { mrptPath(s, presized); }, true);
+		add("ours/path/" + grid + "/stock/0.05m",
+			[=](benchmark::State& s) { ourPath(s, presized); }, true);
+	}
 	bench::registerCloudCases();
 }
 
@@ -427,6 +478,10 @@ void printReport(const RecordingReporter& rep)
 	}
 	printRatio(rep, "insert into 400 x 400 m vs 40 x 40 m map",
 			   "ours/mapsize/400m/stock/0.05m", "ours/mapsize/40m/stock/0.05m", 1.1);
+	printRatio(rep, "1 km path, growing vs presized grid", "ours/path/growing/stock/0.05m",
+			   "ours/path/presized/stock/0.05m", 1.1);
+	printRatio(rep, "1 km path, growing grid vs MRPT's growing", "ours/path/growing/stock/0.05m",
+			   "mrpt/path/growing/stock/0.05m", 1.0);
 	bench::printCloudRatios(rep.microseconds);
 
 	std::printf(

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <string>
 
 #include <mrpt_evidential/support/NumberText.h>
@@ -118,6 +119,10 @@ mrpt::img::CImage withLegend(
 	if (fixedSize) out.filledRectangle(0, 0, width - 1, mapAreaHeight - 1, kBackdrop);
 	out.drawImage(mapLeft, mapTop, map);
 	if (mapAreaHeight >= totalHeight) return out;
+	// MRPT loads its bitmap fonts into a global table on first use, without
+	// a lock: pictures drawn in several threads at once take turns.
+	static std::mutex fontMutex;
+	const std::lock_guard<std::mutex> lock(fontMutex);
 	out.selectTextFont(st.font);
 
 	const auto rowTop = [&](int row) { return mapAreaHeight + kPadding + row * st.rowHeight; };
