@@ -312,6 +312,32 @@ TEST(MapRendering, OptionsRoundTripThroughIniFilesAndMapDefinitions)
 	EXPECT_THROW(o.validate(), std::invalid_argument);
 }
 
+TEST(MapRendering, InvalidOptionsSetInCodeDrawNothing)
+{
+	// The 3-D view and scene files refuse invalid options, naming the
+	// field, and draw nothing.
+	CEvidentialGridMap2D map = movingWallMap();
+	map.renderingOptions.height = std::nan("");
+	mrpt::opengl::CSetOfObjects set;
+	try
+	{
+		map.getVisualizationInto(set);
+		ADD_FAILURE() << "a NaN height was drawn";
+	}
+	catch (const std::invalid_argument& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("height"), std::string::npos) << e.what();
+	}
+	EXPECT_EQ(set.size(), 0u);
+	map.renderingOptions.height = 0.0;
+	map.renderingOptions.style = static_cast<RenderStyle>(7);
+	EXPECT_THROW(map.getVisualizationInto(set), std::invalid_argument);
+	EXPECT_EQ(set.size(), 0u);
+	const fs::path dir = test::scratchDir("map_rendering", "invalid");
+	EXPECT_THROW(map.saveAsScene((dir / "x.3Dscene").string()), std::invalid_argument);
+	EXPECT_TRUE(test::filesIn(dir).empty());
+}
+
 TEST(MapRendering, SavedPicturesCarryTheirLegendAndAScaleBar)
 {
 	const fs::path dir = test::scratchDir("map_rendering", "legend");

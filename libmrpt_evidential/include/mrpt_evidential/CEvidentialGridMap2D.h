@@ -238,8 +238,9 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	/** Writes a scene that MRPT's SceneViewer3D opens (an
 	 * mrpt::opengl::COpenGLScene): the map as getVisualizationInto() draws it
 	 * and, when `path` is not empty, the robot's path as a line strip through
-	 * its positions (in MRPT's path colour, above the map). Written atomically.
-	 * \throws std::runtime_error if the file cannot be written. */
+	 * its positions (in red, above the map). Written atomically.
+	 * \throws std::runtime_error if the file cannot be written;
+	 *  std::invalid_argument as getVisualizationInto(). */
 	void saveAsScene(
 		const std::string& path3Dscene,
 		const std::vector<mrpt::math::TPoint3D>& path = {}) const;
@@ -329,7 +330,9 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	 * RenderStyle::Masses, one textured plane "evidentialGrid.masses" with
 	 * getAsEvidentialImage(), never-seen cells transparent unless
 	 * showUnknown. Everything lies at z = renderingOptions.height. Nothing
-	 * when genericMapParams.enableSaveAs3DObject is false. */
+	 * when genericMapParams.enableSaveAs3DObject is false.
+	 * \throws std::invalid_argument if renderingOptions is invalid (set in
+	 *  code: TRenderingOptions::validate()); `o` is then unchanged. */
 	void getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const override;
 	/** 0: the map takes no part in point matching. */
 	float compute3DMatchingRatio(

@@ -81,6 +81,8 @@ void CEvidentialGridMap2D::TRenderingOptions::loadFromConfigFile(
 std::optional<TInvalidOption> CEvidentialGridMap2D::TRenderingOptions::firstInvalid()
 	const
 {
+	if (style != RenderStyle::Classes && style != RenderStyle::Masses)
+		return TInvalidOption{"style", "Classes or Masses", static_cast<double>(style)};
 	if (!(std::abs(height) <= 1000.0))  // NaN fails too
 		return TInvalidOption{"height", "within [-1000, 1000] m", height};
 	return std::nullopt;
@@ -182,6 +184,7 @@ void CEvidentialGridMap2D::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) 
 {
 	if (!genericMapParams.enableSaveAs3DObject) return;
 	const TRenderingOptions& ro = renderingOptions;
+	ro.validate();
 	const GridGeometry& g = geometry();
 	const std::string name = "evidentialGrid.";
 
