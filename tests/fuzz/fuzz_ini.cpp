@@ -1,5 +1,5 @@
 /* Fuzz target: the map's .ini options, as CMultiMetricMap reads them
- * (creation, insertion, likelihood and MRPT's generic sections of
+ * (creation, insertion, likelihood, rendering and MRPT's generic sections of
  * [MappingApplication_evidentialGrid_00_*]). Loading may throw; options it
  * accepts must be valid, write themselves back and read back identically,
  * and create a map. */
@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <sstream>
 
 #include "FuzzSupport.h"
 
@@ -72,6 +73,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 	{
 		def.insertionOpts.validate();
 		def.likelihoodOpts.validate();
+		def.renderingOpts.validate();
 	}
 	catch (const std::exception& e)
 	{
@@ -89,6 +91,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 	if (!sameOptions(insertion, def.insertionOpts) ||
 		!sameOptions(likelihood, def.likelihoodOpts))
 		fuzz::fail("options changed through the .ini round trip");
+	// The rendering options compare through their own text: every field is
+	// written exactly.
+	def.renderingOpts.saveToConfigFile(written, "renderOpts");
+	CEvidentialGridMap2D::TRenderingOptions rendering;
+	rendering.loadFromConfigFile(written, "renderOpts");
+	std::ostringstream before, after;
+	def.renderingOpts.dumpToTextStream(before);
+	rendering.dumpToTextStream(after);
+	if (before.str() != after.str()) fuzz::fail("rendering options changed through the .ini round trip");
 
 	// Accepted geometry and budget create the map (small ones only: a big
 	// grid is allowed, but slow to fuzz).

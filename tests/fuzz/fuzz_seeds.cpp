@@ -137,7 +137,12 @@ void iniSeeds(const fs::path& dir)
 		  "horizontalTolerance=1.5\nconflictHandling=ToUnknown\ngrowthMargin=3\n"
 		  "[MappingApplication_evidentialGrid_00_likelihoodOpts]\n"
 		  "occupiedMass=0.45\nmaxCorrsDistance=0.6\nsigma=0.2\nzHit=0.8\n"
-		  "zRandom=0.2\nmaxRange=30\ndecimation=3\nunknownAsNeutral=false\n");
+		  "zRandom=0.2\nmaxRange=30\ndecimation=3\nunknownAsNeutral=false\n"
+		  "[MappingApplication_evidentialGrid_00_renderOpts]\n"
+		  "style=Masses\nfreeColor=#F0F0F0\noccupiedColor=101010\nunknownColor=#808080\n"
+		  "conflictColor=#B43CC8\nappearedColor=#ff8c00\ndisappearedColor=#00AAAA\n"
+		  "showFree=false\nshowOccupied=true\nshowConflict=no\nshowMotion=1\n"
+		  "showUnknown=yes\nheight=0.25\n");
 	write("bad-values.ini",
 		  "[MappingApplication_evidentialGrid_00_creationOpts]\n"
 		  "min_x=20 ; above max_x\nresolution=-1e-12\nmaxCells=1e30\n"
