@@ -139,28 +139,41 @@ CObservation2DRangeScan scanAt(ScanKind kind, std::size_t i)
 	return s;
 }
 
-std::unique_ptr<mrpt::maps::COccupancyGridMap2D> mrptMap(
-	ScanKind kind, double resolution, bool widening)
+/** Half-size of a square map that holds a scan of range `maxRange`
+ * anywhere within 1 m of the origin. */
+double halfSizeFor(ScanKind kind, double maxRange)
 {
-	const double h = halfSizeOf(kind);
+	return std::max(halfSizeOf(kind), maxRange + 2.0);
+}
+
+/** `maxRange` 0: the kind's. */
+std::unique_ptr<mrpt::maps::COccupancyGridMap2D> mrptMap(
+	ScanKind kind, double resolution, bool widening, double maxRange = 0)
+{
+	const double range = maxRange > 0 ? maxRange : maxRangeOf(kind);
+	const double h = halfSizeFor(kind, range);
 	auto map = std::make_unique<mrpt::maps::COccupancyGridMap2D>(
 		-h, h, -h, h, resolution);
-	map->insertionOptions.maxDistanceInsertion = static_cast<float>(maxRangeOf(kind));
+	map->insertionOptions.maxDistanceInsertion = static_cast<float>(range);
 	map->insertionOptions.wideningBeamsWithDistance = widening;
 	return map;
 }
 
+/** What a case sets; the settings of the sweep keep the map's defaults
+ * unless given (0). */
 struct OurOptions
 {
 	SensorModel model = SensorModel::ReinforcedMultiEcho;
 	FusionRule rule = FusionRule::Conjunctive;
 	bool decay = true;
+	double maxRange = 0, muF = 0, muO = 0, sectorWidthDegrees = 0;
 };
 
 std::unique_ptr<CEvidentialGridMap2D> ourMap(
 	ScanKind kind, double resolution, const OurOptions& o, double halfSize = 0)
 {
-	const double h = halfSize > 0 ? halfSize : halfSizeOf(kind);
+	const double range = o.maxRange > 0 ? o.maxRange : maxRangeOf(kind);
+	const double h = halfSize > 0 ? halfSize : halfSizeFor(kind, range);
 	auto map = std::make_unique<CEvidentialGridMap2D>(-h, h, -h, h, resolution);
 	map->setMaxCells(std::max<std::size_t>(map->geometry().cellCount(), 100'000'000));
 	auto& io = map->insertionOptions;
@@ -168,7 +181,10 @@ std::unique_ptr<CEvidentialGridMap2D> ourMap(
 	io.fusionRule = o.rule;
 	io.imprecision = o.model == SensorModel::ImpreciseMultiEcho ? resolution : 0.0;
 	io.decayRate = o.decay ? 0.01 : 0.0;
-	io.maxRange = maxRangeOf(kind);
+	io.maxRange = range;
+	if (o.muF > 0) io.muF = o.muF;
+	if (o.muO > 0) io.muO = o.muO;
+	if (o.sectorWidthDegrees > 0) io.sectorWidth = o.sectorWidthDegrees * M_PI / 180.0;
 	return map;
 }
 
@@ -200,9 +216,10 @@ void insertionLoop(benchmark::State& state, Map& map, ScanKind kind)
 	}
 }
 
-void mrptInsert(benchmark::State& state, ScanKind kind, double res, bool widening)
+void mrptInsert(
+	benchmark::State& state, ScanKind kind, double res, bool widening, double maxRange = 0)
 {
-	auto map = mrptMap(kind, res, widening);
+	auto map = mrptMap(kind, res, widening, maxRange);
 	insertionLoop(state, *map, kind);
 }
 
@@ -378,6 +395,61 @@ void add(const std::string& caseName, Fn fn, bool insertion)
 	bench::addCase(caseName, fn, insertion);
 }
 
+/** The settings users change (issue 15), one at a time, against MRPT's grid
+ * with widening beams and the same maxRange: SENA's real scans (returns up to
+ * 80 m) for maxRange, the stock scan for the masses and the sector width. */
+struct SweepCase
+{
+	std::string setting;
+	ScanKind kind;
+	OurOptions ours;
+};
+const std::vector<SweepCase>& sweepCases()
+{
+	static const std::vector<SweepCase> cases = [] {
+		std::vector<SweepCase> out;
+		for (const double range : {10.0, 30.0, 80.0})
+		{
+			OurOptions o;
+			o.maxRange = range;
+			out.push_back({"maxRange" + std::to_string(int(range)), ScanKind::Sena, o});
+		}
+		for (const auto& [muF, muO] : {std::pair{0.6, 0.85}, std::pair{0.9, 0.98}})
+		{
+			OurOptions o;
+			o.muF = muF, o.muO = muO;
+			char name[32];
+			std::snprintf(name, sizeof(name), "muF%.2g-muO%.2g", muF, muO);
+			out.push_back({name, ScanKind::Stock, o});
+		}
+		for (const double degrees : {0.25, 2.0})
+		{
+			OurOptions o;
+			o.sectorWidthDegrees = degrees;
+			char name[32];
+			std::snprintf(name, sizeof(name), "sector%.2gdeg", degrees);
+			out.push_back({name, ScanKind::Stock, o});
+		}
+		return out;
+	}();
+	return cases;
+}
+std::string sweepName(const char* who, const SweepCase& c)
+{
+	return std::string(who) + "/sweep/" + c.setting + "/" + name(c.kind) + "/0.05m";
+}
+
+void registerSweep()
+{
+	for (const SweepCase& c : sweepCases())
+	{
+		add(sweepName("ours", c), [=](benchmark::State& s) { ourInsert(s, c.kind, 0.05, c.ours); },
+			true);
+		add(sweepName("mrpt", c),
+			[=](benchmark::State& s) { mrptInsert(s, c.kind, 0.05, true, c.ours.maxRange); }, true);
+	}
+}
+
 void registerCases()
 {
 	for (const ScanKind kind : {ScanKind::Stock, ScanKind::Sena, ScanKind::Wide})
@@ -419,6 +491,7 @@ void registerCases()
 		[](benchmark::State& s) { ourInsertMapSize(s, 20.0); }, true);
 	add("ours/mapsize/400m/stock/0.05m",
 		[](benchmark::State& s) { ourInsertMapSize(s, 200.0); }, true);
+	registerSweep();
 	for (const bool presized : {false, true})
 	{
 		const std::string grid = presized ? "presized" : "growing";
@@ -478,6 +551,9 @@ void printReport(const RecordingReporter& rep)
 	}
 	printRatio(rep, "insert into 400 x 400 m vs 40 x 40 m map",
 			   "ours/mapsize/400m/stock/0.05m", "ours/mapsize/40m/stock/0.05m", 1.1);
+	for (const SweepCase& c : sweepCases())
+		printRatio(rep, "insert vs widening, " + c.setting + ", " + name(c.kind) + "/0.05m",
+				   sweepName("ours", c), sweepName("mrpt", c), 1.0);
 	printRatio(rep, "1 km path, growing vs presized grid", "ours/path/growing/stock/0.05m",
 			   "ours/path/presized/stock/0.05m", 1.1);
 	printRatio(rep, "1 km path, growing grid vs MRPT's growing", "ours/path/growing/stock/0.05m",
