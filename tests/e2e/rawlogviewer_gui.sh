@@ -9,8 +9,6 @@
 #     map: a click on that entry of the tree; the main window's 3-D view is
 #     checked.
 #  3. SceneViewer3D on a .3Dscene (skipped when no scene is given).
-# The main window is made large, so that its 3-D view shows the small motion
-# cells by hundreds of pixels, well above MIN_PIXELS.
 # A check passes when no colour covers 95 % of the picture and it holds at
 # least MIN_PIXELS pixels within COLOUR_TOLERANCE (on each channel) of every
 # colour of EXPECT_COLOURS, e.g. "free=EBEBEB occupied=1E1E1E".
@@ -27,6 +25,9 @@ source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 IMPORT=/usr/bin/import
 CONVERT=/usr/bin/convert
 MAIN_WINDOW="RawlogViewer - Part of the MRPT project"
+# The main window's size: large, so that its 3-D view shows the small motion
+# cells by hundreds of pixels.
+MAIN_WIDTH=2300 MAIN_HEIGHT=1250
 RAWMAP_DIALOG='Creation of "raw map & paths" from scans & odometry'
 PROGRESS="Creating raw map"
 EMPTY_RAWLOG="Rawlog is empty"
@@ -227,7 +228,7 @@ main_window() {
 	local id
 	id=$(window_id "$MAIN_WINDOW" 90) || { show_log "$1"; fail "RawLogViewer's main window never showed up"; }
 	grep -qF "$(basename "$plugin")" "/proc/$viewer_pid/maps" || fail "the plugin is not loaded in RawLogViewer"
-	place "$id" 0 0 2300 1250
+	place "$id" 0 0 "$MAIN_WIDTH" "$MAIN_HEIGHT"
 	echo "$id"
 }
 
@@ -322,6 +323,10 @@ until [ -s "$scratch/main_window_map.png" ]; do
 		show_log "$scratch/main.log"
 		fail "no child window of RawLogViewer's shows the map after selecting its entry (see main_window_failed.png)"
 	fi
+	# RawLogViewer may size its window again once the rawlog has loaded
+	# (seen under load): put it back first.
+	[ "$(geometry "$main")" = "${MAIN_WIDTH}x${MAIN_HEIGHT}+0+0" ] ||
+		place "$main" 0 0 "$MAIN_WIDTH" "$MAIN_HEIGHT"
 	click "$main" 204 122
 	try=$((try + 1))
 	[ $((try % 2)) -eq 0 ] && xdotool windowfocus "$main" key Home key Down
