@@ -48,6 +48,7 @@ void EvidentialGridStorage::reset(
 	m_presentGain = 1.0;
 	m_currentStamp = 0;
 	m_insertions = 0;
+	m_pristine = true;
 }
 
 bool EvidentialGridStorage::growToInclude(
@@ -134,7 +135,11 @@ QuantizedCell EvidentialGridStorage::withoutConflict(QuantizedCell c)
 void EvidentialGridStorage::setKeepsConflict(bool keeps)
 {
 	if (keeps == m_keepsConflict) return;
-	for (QuantizedCell& c : m_cells) c = keeps ? QuantizedCell{0, c.free, c.occupied, c.stamp} : withoutConflict(c);
+	// A grid fresh from reset() holds vacuous cells only, which read the same
+	// either way: a map's first insertion does not walk its whole grid.
+	if (!m_pristine)
+		for (QuantizedCell& c : m_cells)
+			c = keeps ? QuantizedCell{0, c.free, c.occupied, c.stamp} : withoutConflict(c);
 	m_keepsConflict = keeps;
 	m_ceiling = ceilingFor(keeps);
 }
@@ -151,6 +156,7 @@ void EvidentialGridStorage::beginInsertion(double t)
 {
 	if (!std::isfinite(t))
 		throw std::invalid_argument("insertion time must be a finite number");
+	m_pristine = false;
 	if (m_insertions++ == 0)
 	{
 		m_stampTimes.assign(1, t);
@@ -307,6 +313,7 @@ void EvidentialGridStorage::assign(
 	m_insertions = insertions;
 	m_decayRate = decayRate;
 	m_keepsConflict = keepsConflict;
+	m_pristine = false;
 	m_ceiling = ceiling;
 	m_currentStamp = static_cast<std::uint16_t>(m_stampTimes.size() - 1);
 	updateGains();

@@ -116,6 +116,7 @@ class EvidentialGridStorage
 	 * stays). */
 	void write(std::size_t idx, const Mass& m)
 	{
+		m_pristine = false;
 		QuantizedCell& c = m_cells[idx];
 		if (m_keepsConflict)
 			encodeMass(m, c);
@@ -349,6 +350,10 @@ class EvidentialGridStorage
 	std::vector<QuantizedCell> m_cells;
 	double m_decayRate = 0.0;
 	bool m_keepsConflict = true;
+	/** Every cell vacuous since reset(), no insertion begun and nothing
+	 * assigned: setKeepsConflict() has no cell to convert. (Cells change only
+	 * within an insertion, after beginInsertion().) */
+	bool m_pristine = true;
 	double m_eventRetention = 0.0;
 	/** kMaxCertainty in stored units, or the scale itself when the grid
 	 * keeps conflict. */
