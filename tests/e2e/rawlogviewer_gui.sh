@@ -119,14 +119,19 @@ geometry() {
 		END { printf "%dx%d+%d+%d\n", w, h, x, y }'
 }
 
-# place ID X Y W H: moves and sizes a window and waits until the X server
-# reports the new geometry (no window manager: nothing else moves it).
+# place ID X Y W H: moves and sizes a window until the X server reports the
+# new geometry. There is no window manager, but a program may size its own
+# window again (RawLogViewer does once its rawlog has loaded, late on a busy
+# machine): the request is repeated until the geometry holds.
 place() {
-	local id=$1 wanted="$4x$5+$2+$3" deadline=$((SECONDS + 30))
-	xdotool windowmove "$id" "$2" "$3" windowsize "$id" "$4" "$5"
-	until [ "$(geometry "$id")" = "$wanted" ]; do
+	local id=$1 wanted="$4x$5+$2+$3" deadline=$((SECONDS + 60)) i
+	while :; do
+		xdotool windowmove "$id" "$2" "$3" windowsize "$id" "$4" "$5"
+		for i in 1 2 3 4 5; do
+			[ "$(geometry "$id")" = "$wanted" ] && return 0
+			sleep 0.2
+		done
 		[ $SECONDS -lt $deadline ] || fail "window $id did not become $wanted: $(geometry "$id")"
-		sleep 0.2
 	done
 }
 
