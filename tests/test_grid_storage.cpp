@@ -423,21 +423,3 @@ TEST(GridStorageEvents, AssignChecksEventsAndStampBits)
 	EXPECT_THROW(s.assign(g, {c}, {0.0, 1.0}, 2, 0.0, false), std::invalid_argument);
 	EXPECT_NO_THROW(s.assign(g, {c}, {0.0, 1.0}, 2, 0.0, true));
 }
-
-TEST(GridStorage, GrowthAheadTakesAShareOfTheExtentWithinTheBudget)
-{
-	EvidentialGridStorage s;
-	s.reset(0.0, 10.0, 0.0, 1.0, 0.1, 10'000);  // 100 x 10 cells
-	// Two cells beyond the right side: half the width is added instead.
-	ASSERT_TRUE(s.growToInclude(0.0, 10.2, 0.0, 1.0, 0.0, 10'000, 0.5));
-	EXPECT_EQ(s.geometry().sizeX, 150);
-	EXPECT_EQ(s.geometry().xMin, 0.0);  // the other sides stay
-	EXPECT_EQ(s.geometry().sizeY, 10);
-	// Near the budget, only what the box needs: 152 x 10 cells fit the
-	// budget of 1,520, the 225 x 10 of a growth by half would not.
-	ASSERT_TRUE(s.growToInclude(0.0, 15.2, 0.0, 1.0, 0.0, 1'520, 0.5));
-	EXPECT_EQ(s.geometry().sizeX, 152);
-	EXPECT_FALSE(s.growToInclude(0.0, 16.0, 0.0, 1.0, 0.0, 1'520, 0.5));
-	EXPECT_EQ(s.geometry().sizeX, 152);
-	EXPECT_FALSE(s.growToInclude(0.0, 16.0, 0.0, 1.0, 0.0, 10'000, std::nan("")));
-}

@@ -399,10 +399,7 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 		 * conflict is where things changed. doc/dynamics.md. */
 		ConflictHandling conflictHandling = ConflictHandling::Normalize;
 		/** `growthMargin`: metres added beyond the scan when the grid grows,
-		 * >= 0, default 5. A side that grows gets at least half of the
-		 * grid's extent along its axis too, so that a long path copies the
-		 * grid a logarithmic number of times (within maxCells: near the
-		 * budget, only what the scan and the margin need). */
+		 * >= 0, default 5. */
 		double growthMargin = 5.0;
 		/** `motionWindow`: seconds of data time during which a cell where
 		 * something appeared or left reads so (getCellMotion), (0, 1e6],

@@ -53,9 +53,9 @@ void EvidentialGridStorage::reset(
 
 bool EvidentialGridStorage::growToInclude(
 	double xMin, double xMax, double yMin, double yMax, double margin,
-	std::size_t maxCells, double aheadShare)
+	std::size_t maxCells)
 {
-	for (const double v : {xMin, xMax, yMin, yMax, margin, aheadShare})
+	for (const double v : {xMin, xMax, yMin, yMax, margin})
 		if (!std::isfinite(v)) return false;
 	const GridGeometry& g = m_geometry;
 	const double res = g.resolution;
@@ -66,36 +66,22 @@ bool EvidentialGridStorage::growToInclude(
 	const auto cellsFor = [res](double length) {
 		return GridGeometry::cellsToCover(length, res);
 	};
-	const double needLeft = growLeft ? cellsFor(g.xMin - xMin + margin) : 0;
-	const double needRight = growRight ? cellsFor(xMax - g.xMax() + margin) : 0;
-	const double needDown = growDown ? cellsFor(g.yMin - yMin + margin) : 0;
-	const double needUp = growUp ? cellsFor(yMax - g.yMax() + margin) : 0;
-	const double aheadX = std::floor(std::max(aheadShare, 0.0) * g.sizeX);
-	const double aheadY = std::floor(std::max(aheadShare, 0.0) * g.sizeY);
-	const auto ahead = [](bool grows, double need, double share) {
-		return grows ? std::max(need, share) : 0.0;
-	};
-	double addLeft = ahead(growLeft, needLeft, aheadX), addRight = ahead(growRight, needRight, aheadX);
-	double addDown = ahead(growDown, needDown, aheadY), addUp = ahead(growUp, needUp, aheadY);
-	const auto fits = [&] {
-		const double sx = g.sizeX + addLeft + addRight, sy = g.sizeY + addDown + addUp;
-		return sx * sy <= static_cast<double>(maxCells) &&
-			std::max(sx, sy) <= std::numeric_limits<int>::max() &&
-			GridGeometry::withinLimits(
-				g.xMin - addLeft * res, g.xMin + (g.sizeX + addRight) * res,
-				g.yMin - addDown * res, g.yMin + (g.sizeY + addUp) * res, res);
-	};
-	if (!fits())
-	{
-		addLeft = needLeft, addRight = needRight, addDown = needDown, addUp = needUp;
-		if (!fits()) return false;
-	}
+	const double addLeft = growLeft ? cellsFor(g.xMin - xMin + margin) : 0;
+	const double addRight = growRight ? cellsFor(xMax - g.xMax() + margin) : 0;
+	const double addDown = growDown ? cellsFor(g.yMin - yMin + margin) : 0;
+	const double addUp = growUp ? cellsFor(yMax - g.yMax() + margin) : 0;
 	const double sx = g.sizeX + addLeft + addRight;
 	const double sy = g.sizeY + addDown + addUp;
+	if (sx * sy > static_cast<double>(maxCells) ||
+		std::max(sx, sy) > std::numeric_limits<int>::max())
+		return false;
 
 	GridGeometry grown{
 		g.xMin - addLeft * res, g.yMin - addDown * res, res, static_cast<int>(sx),
 		static_cast<int>(sy)};
+	if (!GridGeometry::withinLimits(
+			grown.xMin, grown.xMax(), grown.yMin, grown.yMax(), res))
+		return false;
 	// New cells are vacuous: their stamp does not matter, vacuous never decays.
 	std::vector<QuantizedCell> cells(grown.cellCount(), QuantizedCell{});
 	const int dx = static_cast<int>(addLeft), dy = static_cast<int>(addDown);

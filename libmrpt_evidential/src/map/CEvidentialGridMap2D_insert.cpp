@@ -18,15 +18,6 @@
 
 using namespace mrpt_evidential;
 
-namespace
-{
-/** A side of the grid that has to grow gets at least half of the grid's
- * extent along its axis: on a long path, growth copies the grid a
- * logarithmic number of times, and the grid is at most 1.5 times as long as
- * the path needs on each axis (while maxCells allows). */
-constexpr double kGrowthAheadShare = 0.5;
-}  // namespace
-
 bool CEvidentialGridMap2D::internal_insertObservation(
 	const mrpt::obs::CObservation& obs,
 	const std::optional<const mrpt::poses::CPose3D>& robotPose)
@@ -91,7 +82,7 @@ void CEvidentialGridMap2D::fusePolarGrid(
 	if (box.empty()) return;
 	if (!m_grid.growToInclude(
 			box.xMin, box.xMax, box.yMin, box.yMax, insertionOptions.growthMargin,
-			m_maxCells, kGrowthAheadShare) &&
+			m_maxCells) &&
 		!m_budgetWarningShown)
 	{
 		m_budgetWarningShown = true;

@@ -63,17 +63,12 @@ class EvidentialGridStorage
 	/** Grows the grid so that it covers [xMin, xMax] x [yMin, yMax], adding
 	 * `margin` metres beyond each side that has to grow, keeping every cell
 	 * where it is. Does nothing when the box is already covered.
-	 * With `aheadShare` > 0, each side that grows gets at least that share
-	 * of the grid's current extent along its axis (geometric growth: a path
-	 * that keeps leaving the grid copies it a logarithmic number of times,
-	 * not once every few scans); when that would pass `maxCells`, the side
-	 * gets only what the box and the margin need.
 	 * \return false (and leaves the grid as it is) if the grown grid would
 	 *  exceed `maxCells` cells or GridGeometry's limits, or a bound is not
 	 *  finite. */
 	bool growToInclude(
 		double xMin, double xMax, double yMin, double yMax, double margin,
-		std::size_t maxCells, double aheadShare = 0.0);
+		std::size_t maxCells);
 
 	/** Decay rate, per second of data time, >= 0 (0: no decay).
 	 * \throws std::invalid_argument if negative or not finite. */
