@@ -423,3 +423,71 @@ TEST(GridStorageEvents, AssignChecksEventsAndStampBits)
 	EXPECT_THROW(s.assign(g, {c}, {0.0, 1.0}, 2, 0.0, false), std::invalid_argument);
 	EXPECT_NO_THROW(s.assign(g, {c}, {0.0, 1.0}, 2, 0.0, true));
 }
+
+namespace
+{
+/** A grid without conflict whose cells hold random masses, stamps of several
+ * insertions, impact flags and events of every kind. */
+EvidentialGridStorage gridWithVariedCells(double decayRate, std::uint32_t seed)
+{
+	EvidentialGridStorage g;
+	g.reset(0.0, 4.0, 0.0, 1.0, 0.1, 1000);
+	g.setKeepsConflict(false);
+	g.setDecayRate(decayRate);
+	g.setEventRetention(10.0);
+	std::mt19937 rng(seed);
+	std::uniform_real_distribution<double> unit(0.0, 1.0);
+	for (int scan = 0; scan < 6; ++scan)
+	{
+		g.beginInsertion(100.0 + 0.7 * scan);
+		for (std::size_t idx = 0; idx < g.geometry().cellCount(); ++idx)
+		{
+			if (unit(rng) < 0.5) continue;
+			const double f = unit(rng), o = unit(rng) * (1.0 - f) * (unit(rng) < 0.3 ? 1.0 : 0.1);
+			g.write(idx, Mass{0.0, f, o, 1.0 - f - o});
+			if (unit(rng) < 0.2) g.markImpact(idx);
+			const double e = unit(rng);
+			if (e < 0.1) g.setEvent(idx, CellEvent::Appeared);
+			else if (e < 0.2) g.setEvent(idx, CellEvent::Leaving);
+			else if (e < 0.3) g.setEvent(idx, CellEvent::Disappeared);
+		}
+	}
+	g.beginInsertion(106.0);
+	return g;
+}
+}  // namespace
+
+TEST(GridStorage, QuietFreeRunsFuseAsCellByCellAndListTheLoudInOrder)
+{
+	for (const double rate : {0.0, 0.05})
+		for (std::size_t first = 0; first < 5; ++first)
+			for (const std::size_t count : {0, 1, 3, 4, 5, 7, 8, 9, 200, 395})
+			{
+				EvidentialGridStorage bulk = gridWithVariedCells(rate, 7);
+				EvidentialGridStorage oneByOne = gridWithVariedCells(rate, 7);
+				const float w = 0.37f;
+				const std::uint16_t occupiedBelow = 20000;
+				std::vector<std::size_t> loud, expectedLoud;
+				if (rate > 0.0)
+					bulk.fuseQuietFreeRun<true>(first, count, w, occupiedBelow, loud);
+				else
+					bulk.fuseQuietFreeRun<false>(first, count, w, occupiedBelow, loud);
+				for (std::size_t idx = first; idx < first + count; ++idx)
+				{
+					if (oneByOne.isLoud(idx, occupiedBelow))
+						expectedLoud.push_back(idx);
+					else if (rate > 0.0)
+						oneByOne.fuseSimpleFree<true, false>(idx, w);
+					else
+						oneByOne.fuseSimpleFree<false, false>(idx, w);
+				}
+				ASSERT_EQ(loud, expectedLoud) << rate << " " << first << " " << count;
+				// Bit for bit, loud cells untouched.
+				ASSERT_TRUE(bulk.cells() == oneByOne.cells()) << rate << " " << first << " " << count;
+				if (count >= 200)
+				{
+					EXPECT_GT(loud.size(), 10u);
+					EXPECT_LT(loud.size(), count / 2);
+				}
+			}
+}

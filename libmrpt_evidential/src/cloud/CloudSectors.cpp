@@ -2,6 +2,8 @@
 
 #include "cloud/CloudSectors.h"
 
+#include <mrpt_evidential/support/FastArcTangent.h>
+
 #include <cmath>
 
 #include "cloud/GroundPlane.h"
@@ -55,9 +57,12 @@ TCloudCounts sortCloudIntoSectors(
 		// Only x and y of the point in the world, from the sensor's place.
 		const double dx = r00 * (p.x - sensor.x) + r01 * (p.y - sensor.y) + r02 * (p.z - sensor.z);
 		const double dy = r10 * (p.x - sensor.x) + r11 * (p.y - sensor.y) + r12 * (p.z - sensor.z);
-		const double range = std::hypot(dx, dy);
-		// Nearest sector centre; the last one wraps to the first.
-		const auto s = static_cast<std::size_t>(std::lround((std::atan2(dy, dx) + M_PI) / spacing)) %
+		// No hypot: its care for overflow costs more than the rest of the loop.
+		const double range = std::sqrt(dx * dx + dy * dy);
+		// Nearest sector centre; the last one wraps to the first. A point
+		// within 2e-6 rad of two sectors' border may go to either.
+		const auto s =
+			static_cast<std::size_t>(std::lround((detail::fastAtan2(dy, dx) + M_PI) / spacing)) %
 			sectors;
 		if (obstacle)
 		{

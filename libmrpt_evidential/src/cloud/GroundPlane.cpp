@@ -72,11 +72,14 @@ std::optional<TGroundPlane> fitGroundPlane(
 	// Ground can only be low: below the sensor by the mounting heights, give
 	// or take the steepest slope's rise.
 	std::vector<mrpt::math::TPoint3Df> low;
+	low.reserve(points.size());
 	const double slope = std::tan(fit.maxSlope);
 	const double top = fit.sensorZ - fit.minSensorHeight, bottom = fit.sensorZ - fit.maxSensorHeight;
 	for (const auto& p : points)
 	{
-		const double rise = slope * std::hypot(p.x, p.y);
+		// Not std::hypot: its care for overflow cost most of the fit.
+		const double x = p.x, y = p.y;
+		const double rise = slope * std::sqrt(x * x + y * y);
 		if (p.z <= top + rise && p.z >= bottom - rise) low.push_back(p);
 	}
 	if (low.size() < std::max<std::size_t>(fit.minInliers, 3)) return std::nullopt;

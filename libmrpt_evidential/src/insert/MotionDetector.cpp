@@ -39,18 +39,24 @@ bool CMotionDetector::nearStaticStructure(
 	const int cx = static_cast<int>(idx % static_cast<std::size_t>(g.sizeX));
 	const int cy = static_cast<int>(idx / static_cast<std::size_t>(g.sizeX));
 	const int r = m_rules.clearanceCells;
+	const int x0 = std::max(0, cx - r), x1 = std::min(g.sizeX - 1, cx + r);
 	for (int y = std::max(0, cy - r); y <= std::min(g.sizeY - 1, cy + r); ++y)
-		for (int x = std::max(0, cx - r); x <= std::min(g.sizeX - 1, cx + r); ++x)
+		for (int x = x0; x <= x1;)
 		{
-			const std::size_t n = g.index(x, y);
-			// The imprecise model's spread around impacts is not structure.
-			if (n == idx || !grid.heldImpact(n) || !grid.mayLeanOccupied(n) ||
-				!leansOccupied(grid.read(n)))
-				continue;
-			const CellEvent e = grid.event(n);
-			const bool moving = e == CellEvent::Leaving ||
-				(e == CellEvent::Appeared && isRecent(grid, n));
-			if (!moving) return true;
+			// Most cells are not structure; the exact test is for the few
+			// whose stored values may be.
+			const int n = std::min(x1 - x + 1, EvidentialGridStorage::kMaskWidth);
+			std::uint32_t maybe = grid.mayBeStructure(g.index(x, y), n);
+			for (; maybe != 0; maybe &= maybe - 1)
+			{
+				const std::size_t cell = g.index(x + __builtin_ctz(maybe), y);
+				if (cell == idx || !leansOccupied(grid.read(cell))) continue;
+				const CellEvent e = grid.event(cell);
+				const bool moving = e == CellEvent::Leaving ||
+					(e == CellEvent::Appeared && isRecent(grid, cell));
+				if (!moving) return true;
+			}
+			x += n;
 		}
 	return false;
 }

@@ -28,8 +28,13 @@ void CScanImpacts::build(
 			const double fx = std::floor((x - grid.xMin) / grid.resolution);
 			const double fy = std::floor((y - grid.yMin) / grid.resolution);
 			if (!(fx >= 0 && fy >= 0 && fx < grid.sizeX && fy < grid.sizeY)) continue;
-			m_cells.push_back(
-				{grid.index(static_cast<int>(fx), static_cast<int>(fy)), occupied, false});
+			const std::size_t idx = grid.index(static_cast<int>(fx), static_cast<int>(fy));
+			// A sector's impacts in one cell (a cloud's layers on one wall)
+			// are one entry: the sort below has that much less to do.
+			if (!m_cells.empty() && m_cells.back().index == idx)
+				m_cells.back().occupied = std::max(m_cells.back().occupied, occupied);
+			else
+				m_cells.push_back({idx, occupied, false});
 		}
 	}
 	std::sort(m_cells.begin(), m_cells.end(), [](const auto& a, const auto& b) {

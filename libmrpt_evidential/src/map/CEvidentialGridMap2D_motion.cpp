@@ -40,35 +40,46 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 			: m_grid.fuse(idx, observed, rule, handling);
 		motion.afterFusion(m_grid, idx, split, observed, impact);
 	};
-	// A run of the free mass w finds an event only in a cell that already
-	// has one, or whose n(O) w reaches motionMinConflict.
+	// A free mass w finds an event only in a cell that already has one, or
+	// whose n(O) w reaches motionMinConflict.
+	const auto occupiedBelowFor = [&](double w) {
+		return static_cast<std::uint16_t>(std::min(
+			std::ceil(io.motionMinConflict / std::max(w, 1e-9) * kMassScale), kMassScale));
+	};
 	const double w = uniform.free;
-	const double suspect =
-		std::min(std::ceil(io.motionMinConflict / std::max(w, 1e-9) * kMassScale), kMassScale);
-	const auto occupiedBelow = static_cast<std::uint16_t>(suspect);
-	// In pieces: one loud cell sends its piece down the slow path, not the
-	// whole run.
-	constexpr std::size_t kPiece = 16;
+	const std::uint16_t occupiedBelow = occupiedBelowFor(w);
+	std::vector<std::size_t>& loud = m_workspace->loudCells;
 	const auto fuseRun = [&](auto decays, std::size_t first, std::size_t count) {
-		for (const std::size_t end = first + count; first < end; first += kPiece)
+		if (!dempster)
 		{
-			const std::size_t n = std::min(kPiece, end - first);
-			if (dempster && m_grid.isQuietRun(first, n, occupiedBelow))
-				for (std::size_t idx = first; idx < first + n; ++idx)
-					m_grid.fuseSimpleFree<decltype(decays)::value, false>(
-						idx, static_cast<float>(w));
-			else
-				for (std::size_t idx = first; idx < first + n; ++idx)
-					single(idx, uniform, false);
+			for (std::size_t idx = first; idx < first + count; ++idx)
+				single(idx, uniform, false);
+			return;
 		}
+		// The quiet cells in bulk, then the loud ones one by one, in order.
+		loud.clear();
+		m_grid.fuseQuietFreeRun<decltype(decays)::value>(
+			first, count, static_cast<float>(w), occupiedBelow, loud);
+		for (const std::size_t idx : loud) single(idx, uniform, false);
 	};
 	const auto fuseAll = [&](auto decays) {
 		transform.forEachInformedCell(
 			geometry(),
 			[&](std::size_t idx, const Mass& observed) {
-				const double hit = hits.occupiedAt(idx);
-				if (hit > 0.0) m_grid.markImpact(idx);
-				single(idx, hit > 0.0 ? withImpact(observed, hit) : observed, hit > 0.0);
+				if (const double hit = hits.occupiedAt(idx); hit > 0.0)
+				{
+					m_grid.markImpact(idx);
+					single(idx, withImpact(observed, hit), true);
+				}
+				// Most mixes are along the angle only, a simple free mass: a
+				// quiet cell takes it as the bulk does.
+				else if (
+					dempster && observed.occupied == 0.0 && observed.conflict == 0.0 &&
+					!m_grid.isLoud(idx, occupiedBelowFor(observed.free)))
+					m_grid.fuseSimpleFree<decltype(decays)::value, false>(
+						idx, static_cast<float>(observed.free));
+				else
+					single(idx, observed, false);
 			},
 			[&](std::size_t first, std::size_t count) {
 				hits.splitRun(

@@ -22,6 +22,8 @@ struct CEvidentialGridMap2D::TWorkspace
 	CPolarToCartesian transform;
 	CScanImpacts impacts;
 	CMotionDetector motion;
+	/** The loud cells of a free run (see fuseQuietFreeRun()). */
+	std::vector<std::size_t> loudCells;
 	/** A 3-D observation's points in the robot's frame, and its returns by
 	 * sector. */
 	std::vector<mrpt::math::TPoint3Df> cloudPoints;

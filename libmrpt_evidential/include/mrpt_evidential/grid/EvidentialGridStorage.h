@@ -201,11 +201,21 @@ class EvidentialGridStorage
 			// Decay moves the share 1 - d of each mass to Omega: the conflict
 			// becomes d K and the normal part keeps s = d (1 - K) / (1 - d K).
 			const auto d = static_cast<float>(decayFactor(c.stamp));
-			const float decayedKeep = 1.0f - d * (1.0f - keep);
-			const float s = d * keep / decayedKeep;
-			f *= s;
-			o *= s;
-			keep = decayedKeep;
+			if constexpr (KeepsConflict)
+			{
+				const float decayedKeep = 1.0f - d * (1.0f - keep);
+				const float s = d * keep / decayedKeep;
+				f *= s;
+				o *= s;
+				keep = decayedKeep;
+			}
+			else
+			{
+				// Without conflict the normal part is the mass: s = d, and no
+				// division (the compiler may not fold d * 0 itself).
+				f *= d;
+				o *= d;
+			}
 		}
 		const float u = scale - f - o;
 		const float newConflict = o * w / scale;
@@ -219,18 +229,23 @@ class EvidentialGridStorage
 			encodeScaledNormal(c, (f + u * w) * normalize, (o - o * w) * normalize, m_ceiling);
 		restamp(c);
 	}
-	/** True when no cell of [first, first + count) has an event that a free
-	 * sight judges again (Appeared, Leaving) or a stored n(O) of
-	 * `occupiedBelow` or more: free evidence then finds nothing there for
-	 * the motion layer (decay only lowers n(O)). */
-	bool isQuietRun(std::size_t first, std::size_t count, std::uint16_t occupiedBelow) const
+	/** True when a free sight of cell idx may find something for the motion
+	 * layer: the cell has an event that a free sight judges again (Appeared,
+	 * Leaving) or a stored n(O) of `occupiedBelow` or more (decay only lowers
+	 * n(O)). A cell that is not loud is quiet. */
+	bool isLoud(std::size_t idx, std::uint16_t occupiedBelow) const
 	{
-		unsigned loud = 0;
-		for (std::size_t i = first; i < first + count; ++i)
-			loud |= static_cast<unsigned>(m_cells[i].occupied >= occupiedBelow) |
-				static_cast<unsigned>((m_cells[i].aside & kEventJudgedWhenSeenFree) != 0);
-		return loud == 0;
+		const QuantizedCell& c = m_cells[idx];
+		return c.occupied >= occupiedBelow || (c.aside & kEventJudgedWhenSeenFree) != 0;
 	}
+	/** fuseSimpleFree<Decays, false>() (a grid without conflict) into every
+	 * quiet cell of [first, first + count) (see isLoud()); loud cells are
+	 * left unfused, their indices appended to `loud` in order. Four cells at
+	 * a time where the target has SSE2, with the same results. */
+	template <bool Decays>
+	void fuseQuietFreeRun(
+		std::size_t first, std::size_t count, float w, std::uint16_t occupiedBelow,
+		std::vector<std::size_t>& loud);
 	/** @} */
 
 	/** Records that cell idx holds an impact of the current scan. The
@@ -239,13 +254,23 @@ class EvidentialGridStorage
 	 * but the scans being scored end where beams ended. */
 	void markImpact(std::size_t idx) { m_cells[idx].stamp |= kHeldImpact; }
 	bool heldImpact(std::size_t idx) const { return (m_cells[idx].stamp & kHeldImpact) != 0; }
-	/** False when cell idx cannot have m(O) > m(F) and m(O) >= 0.5, decayed
-	 * or not (decay only scales both down): a test on the stored values that
-	 * spares the decoding. */
-	bool mayLeanOccupied(std::size_t idx) const
+	/** Width of the masks mayBeStructure() returns. */
+	static constexpr int kMaskWidth = 32;
+	/** Bit k set when cell first + k (k < count <= kMaskWidth, all in one
+	 * row) held an impact and may have m(O) > m(F) and m(O) >= 0.5, decayed
+	 * or not (decay only scales both down): a test on the stored values,
+	 * without branches or decoding, that rules most cells out. */
+	std::uint32_t mayBeStructure(std::size_t first, int count) const
 	{
-		const QuantizedCell& c = m_cells[idx];
-		return c.occupied > c.free && c.occupied >= kMassScale / 2;
+		std::uint32_t mask = 0;
+		for (int k = 0; k < count; ++k)
+		{
+			const QuantizedCell& c = m_cells[first + static_cast<std::size_t>(k)];
+			const bool held = (c.stamp & kHeldImpact) != 0;
+			const bool leans = c.occupied > c.free && c.occupied >= kMassScale / 2;
+			mask |= static_cast<std::uint32_t>(held && leans) << k;
+		}
+		return mask;
 	}
 
 	/** @name Motion events (grids without conflict; CellEvent::None
