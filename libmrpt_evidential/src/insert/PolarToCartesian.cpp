@@ -232,6 +232,10 @@ void CPolarToCartesian::setup(
 bool CPolarToCartesian::inFreeMargin(double x, double y) const
 {
 	if (!m_polar || m_box.empty()) return false;
+	// Outside the informed region's box no beam passes: most of a spinning
+	// sensor's past arrivals, found without the polar conversion.
+	if (!(x >= m_box.xMin && x <= m_box.xMax && y >= m_box.yMin && y <= m_box.yMax))
+		return false;
 	double angle, range2;
 	polarOfCells(x - m_sensor.x, y - m_sensor.y, 0.0, 1, &angle, &range2);
 	if (angle >= m_span) return false;
