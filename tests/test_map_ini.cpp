@@ -188,6 +188,7 @@ TEST(MapIni, InsertionOptionsRoundTripThroughIni)
 	o.minObstacleHeight = 1.0 / 9.0;
 	o.maxObstacleHeight = 2.75;
 	o.groundReturns = GroundReturns::Nothing;
+	o.insertionThreads = 3;
 	mrpt::config::CConfigFileMemory ini;
 	o.saveToConfigFile(ini, "opts");
 	CEvidentialGridMap2D::TInsertionOptions back;
@@ -209,12 +210,13 @@ TEST(MapIni, InsertionOptionsRoundTripThroughIni)
 	EXPECT_EQ(back.minObstacleHeight, o.minObstacleHeight);
 	EXPECT_EQ(back.maxObstacleHeight, o.maxObstacleHeight);
 	EXPECT_EQ(back.groundReturns, o.groundReturns);
+	EXPECT_EQ(back.insertionThreads, 3u);
 	for (const char* key :
 		 {"sensorModel", "muF", "muO", "imprecision", "imprecisionProfile",
 		  "sectorWidth", "maxRange", "invalidRangesAsFree", "freeMargin", "fusionRule",
 		  "decayRate", "horizontalTolerance", "conflictHandling", "growthMargin",
 		  "motionWindow", "motionMinConflict", "motionClearance", "groundRemoval",
-		  "minObstacleHeight", "maxObstacleHeight", "groundReturns"})
+		  "minObstacleHeight", "maxObstacleHeight", "groundReturns", "insertionThreads"})
 		EXPECT_NE(a.str().find(key), std::string::npos) << key;
 }
 
@@ -246,6 +248,9 @@ TEST(MapIni, InvalidValuesAreRejectedNamingKeyAndValue)
 		{"insertOpts", "maxObstacleHeight=0.1"},
 		{"insertOpts", "maxObstacleHeight=nan"},
 		{"insertOpts", "groundReturns=Maybe"},
+		{"insertOpts", "insertionThreads=0"},
+		{"insertOpts", "insertionThreads=65"},
+		{"insertOpts", "insertionThreads=1.5"},
 		{"renderOpts", "style=Pretty"},
 		{"renderOpts", "freeColor=#12345"},
 		{"renderOpts", "occupiedColor=black"},
@@ -318,6 +323,7 @@ TEST(BadOptions, InvalidInsertionOptionsStopInsertionNamingTheField)
 		 [](Options& o) { o.groundRemoval = static_cast<GroundRemoval>(3); }},
 		{"groundReturns",
 		 [](Options& o) { o.groundReturns = static_cast<GroundReturns>(2); }},
+		{"insertionThreads", [](Options& o) { o.insertionThreads = 0; }},
 		{"fusionRule", [](Options& o) { o.fusionRule = static_cast<FusionRule>(17); }},
 		{"sensorModel", [](Options& o) { o.sensorModel = static_cast<SensorModel>(9); }},
 		{"conflictHandling",

@@ -1,4 +1,6 @@
-/* Const methods of CEvidentialGridMap2D from several threads at once, while
+/* Insertion on several threads (insertionOptions.insertionThreads) gives
+ * the map of one thread, bit for bit. Const methods of CEvidentialGridMap2D
+ * from several threads at once, while
  * no thread changes the map: reading masses, pictures, asString, counts, the
  * occupancy-grid conversion, occupied cells, serialization, copies, saving
  * to files and the likelihood, its field built on first use by whichever
@@ -21,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "support/box_world.h"
 #include "support/map_bytes.h"
 #include "support/scans.h"
 #include "support/test_helpers.h"
@@ -153,5 +156,74 @@ TEST(Threads, ConstMethodsRunConcurrentlyWithColdAndWarmCaches)
 			got[t] = readAll(map, probe, poses, scratch + "/thread" + std::to_string(t));
 		});
 		for (int t = 0; t < kThreads; ++t) expectEqual(got[t], expected, t);
+	}
+}
+
+namespace
+{
+/** A room where a box slides and a person walks (events within the motion
+ * window at the end), scanned by a robot that sways and
+ * turns (so that bands meet moving things, walls and impacts), into a map
+ * of the given settings. */
+CEvidentialGridMap2D mapOfMovingBox(
+	unsigned threads, ConflictHandling handling, FusionRule rule, double decayRate)
+{
+	// Cells of 2 cm: each scan's box of some 130,000 cells is worth three
+	// bands (smaller scans keep to one thread).
+	CEvidentialGridMap2D map(-5, 5, -4, 4, 0.02);
+	auto& io = map.insertionOptions;
+	io.maxRange = 15.0;
+	io.conflictHandling = handling;
+	io.fusionRule = rule;
+	io.decayRate = decayRate;
+	io.insertionThreads = threads;
+	const test::ScanSetup setup = test::ScanSetup().maxRange(15.0);
+	for (int k = 0; k < 60; ++k)
+	{
+		// The box slides 0.1 m a scan from scan 40 on, a person walks across.
+		std::vector<test::TBox> boxes = test::roomWalls();
+		const double slide = 0.1 * std::max(0, k - 40);
+		boxes.push_back({-1.2 + slide, -0.2, -0.8 + slide, 0.2});
+		const double walk = -3.0 + 0.12 * k;
+		boxes.push_back({walk, 1.5, walk + 0.4, 1.9});
+		const double s = 0.1 * k;
+		const mrpt::poses::CPose3D pose(
+			0.5 * std::sin(s), -2.0 + 0.3 * std::cos(s), 0.0, M_PI / 2 + 1.2 * std::sin(0.7 * s),
+			0, 0);
+		map.insertObservation(test::scanOfBoxes(boxes, pose, setup.at(0.1 * k)), pose);
+	}
+	return map;
+}
+}  // namespace
+
+TEST(Threads, InsertionOnSeveralThreadsGivesTheMapOfOne)
+{
+	struct TCase
+	{
+		ConflictHandling handling;
+		FusionRule rule;
+		double decayRate;
+	};
+	for (const TCase& c :
+		 {TCase{ConflictHandling::Normalize, FusionRule::Conjunctive, 0.05},
+		  TCase{ConflictHandling::Normalize, FusionRule::Conjunctive, 0.0},
+		  TCase{ConflictHandling::Keep, FusionRule::Conjunctive, 0.05},
+		  TCase{ConflictHandling::ToUnknown, FusionRule::Yager, 0.0}})
+	{
+		const CEvidentialGridMap2D one = mapOfMovingBox(1, c.handling, c.rule, c.decayRate);
+		const auto expected = serialize(one);
+		if (c.handling != ConflictHandling::Keep)
+		{
+			ASSERT_GT(one.countMotion().appeared + one.countMotion().disappeared, 0u)
+				<< "the box's move must give the bands motion events to agree on";
+		}
+		for (const unsigned threads : {2u, 3u, 8u})
+		{
+			const CEvidentialGridMap2D many =
+				mapOfMovingBox(threads, c.handling, c.rule, c.decayRate);
+			EXPECT_TRUE(serialize(many) == expected)
+				<< threads << " threads, handling " << int(c.handling) << ", rule "
+				<< int(c.rule) << ", decay " << c.decayRate;
+		}
 	}
 }

@@ -428,6 +428,14 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 		/** `groundReturns`: what a ground point proves: FreeSpace (default:
 		 * free space up to it along its azimuth) or Nothing. */
 		GroundReturns groundReturns = GroundReturns::FreeSpace;
+		/** `insertionThreads`: threads that fuse an observation's cells,
+		 * 1 to 64, default 1. Each fuses a band of rows; the motion layer's
+		 * decisions are settled afterwards in row order, so the map is the
+		 * same, bit for bit, whatever the count. How the map is built, not
+		 * what it holds: not stored in map files (a loaded map inserts on
+		 * one thread). */
+		unsigned insertionThreads = 1;
+		static constexpr unsigned kMaxInsertionThreads = 64;
 
 		/** Reads the keys above from `section`; absent keys keep their value.
 		 * \throws std::invalid_argument naming the key and value of the first

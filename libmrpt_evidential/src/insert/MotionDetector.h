@@ -87,6 +87,14 @@ class CMotionDetector
 		}
 		m_arrivals.resize(kept);
 	}
+	/** Appends the candidates `band` collected (a detector that only ran
+	 * afterFusion() over a band of the scan's rows) to this scan's, and
+	 * clears them there. */
+	void adoptCandidates(CMotionDetector& band)
+	{
+		m_candidates.insert(m_candidates.end(), band.m_candidates.begin(), band.m_candidates.end());
+		band.m_candidates.clear();
+	}
 	/** Settles the candidates of the scan. */
 	void settle(EvidentialGridStorage& grid);
 

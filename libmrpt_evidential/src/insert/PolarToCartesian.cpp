@@ -258,6 +258,22 @@ bool CPolarToCartesian::inFreeMargin(double x, double y) const
 	return withheld;
 }
 
+CPolarToCartesian::TRows CPolarToCartesian::prepareRows(const GridGeometry& grid)
+{
+	m_rows = TRows();
+	if (!m_polar || m_box.empty()) return m_rows;
+	const double res = grid.resolution;
+	const int first = detail::clampToInt(
+		std::ceil((m_box.yMin - grid.yMin) / res - 0.5), 0, grid.sizeY);
+	const int last = detail::clampToInt(
+		std::floor((m_box.yMax - grid.yMin) / res - 0.5), -1, grid.sizeY - 1);
+	if (first > last) return m_rows;
+	m_spans.fill(m_polygon, grid, first, last);
+	m_uniformSpans.fill(m_uniformPolygon, grid, first, last);
+	m_rows = {first, last};
+	return m_rows;
+}
+
 void CPolarToCartesian::RowSpans::fill(
 	const std::vector<double>& polygon, const GridGeometry& grid, int first,
 	int last)

@@ -138,7 +138,27 @@ class CPolarToCartesian
 	template <typename VisitMixed, typename VisitUniform>
 	void forEachInformedCell(
 		const GridGeometry& grid, VisitMixed&& visitMixed,
-		VisitUniform&& visitUniform);
+		VisitUniform&& visitUniform)
+	{
+		const TRows rows = prepareRows(grid);
+		visitRows(grid, rows.first, rows.last, visitMixed, visitUniform);
+	}
+
+	/** The rows of `grid` that the scan informs, first to last (none when
+	 * first > last). */
+	struct TRows
+	{
+		int first = 0, last = -1;
+	};
+	/** forEachInformedCell() in two steps, so that bands of rows can be
+	 * visited on several threads: prepareRows() works out the rows' spans,
+	 * then visitRows() visits rows [first, last] within them, changing
+	 * nothing of the transform. */
+	TRows prepareRows(const GridGeometry& grid);
+	template <typename VisitMixed, typename VisitUniform>
+	void visitRows(
+		const GridGeometry& grid, int first, int last, VisitMixed&& visitMixed,
+		VisitUniform&& visitUniform) const;
 
    private:
 	/** For each grid row from `first`, the sorted x where its centre line
@@ -178,6 +198,8 @@ class CPolarToCartesian
 	const CPolarSourceGrid* m_polar = nullptr;
 	PlanarSensorPose m_sensor;
 	Box m_box;
+	/** The rows prepareRows() worked out the spans of. */
+	TRows m_rows;
 	/** What the mix needs of a sector, side by side. */
 	struct SectorSpan
 	{
@@ -273,24 +295,16 @@ inline bool CPolarToCartesian::mixAt(
 }
 
 template <typename VisitMixed, typename VisitUniform>
-void CPolarToCartesian::forEachInformedCell(
-	const GridGeometry& grid, VisitMixed&& visitMixed,
-	VisitUniform&& visitUniform)
+void CPolarToCartesian::visitRows(
+	const GridGeometry& grid, int first, int last, VisitMixed&& visitMixed,
+	VisitUniform&& visitUniform) const
 {
 	if (!m_polar || m_box.empty()) return;
 	const double res = grid.resolution;
-	const int first = detail::clampToInt(
-		std::ceil((m_box.yMin - grid.yMin) / res - 0.5), 0, grid.sizeY);
-	const int last = detail::clampToInt(
-		std::floor((m_box.yMax - grid.yMin) / res - 0.5), -1, grid.sizeY - 1);
-	if (first > last) return;
-	m_spans.fill(m_polygon, grid, first, last);
-	m_uniformSpans.fill(m_uniformPolygon, grid, first, last);
-
 	Mass observed;
 	for (int cy = first; cy <= last; ++cy)
 	{
-		const auto k = static_cast<std::size_t>(cy - first);
+		const auto k = static_cast<std::size_t>(cy - m_rows.first);
 		const double dy = grid.cellCenterY(cy) - m_sensor.y;
 		const std::size_t rowIndex = grid.index(0, cy);
 		std::size_t u = m_uniformSpans.start[k];

@@ -50,8 +50,9 @@ class CScanImpacts
 	class CCursor
 	{
 	   public:
-		explicit CCursor(std::vector<TImpactCell>& cells)
-			: m_it(cells.begin()), m_end(cells.end())
+		CCursor(
+			std::vector<TImpactCell>::iterator from, std::vector<TImpactCell>::iterator end)
+			: m_it(from), m_end(end)
 		{
 		}
 		/** The occupied mass of the impacts in cell idx, 0 if it holds none. */
@@ -94,8 +95,22 @@ class CScanImpacts
 	 * cleared. */
 	CCursor cursor()
 	{
+		clearVisits();
+		return cursorFrom(0);
+	}
+	/** Clears the visited marks of an earlier walk. */
+	void clearVisits()
+	{
 		for (TImpactCell& c : m_cells) c.visited = false;
-		return CCursor(m_cells);
+	}
+	/** A cursor from the first impact cell at or after `index`, the visited
+	 * marks kept: one for each band of rows that threads walk at once. */
+	CCursor cursorFrom(std::size_t index)
+	{
+		const auto from = std::lower_bound(
+			m_cells.begin(), m_cells.end(), index,
+			[](const TImpactCell& c, std::size_t i) { return c.index < i; });
+		return CCursor(from, m_cells.end());
 	}
 	/** fn(index, occupied) for each impact cell the walk did not visit: a
 	 * cloud's farther impacts, beyond the transform's reach. */

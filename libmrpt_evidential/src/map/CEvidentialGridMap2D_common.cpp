@@ -287,6 +287,8 @@ std::optional<TInvalidOption>
 			"maxObstacleHeight", "in (minObstacleHeight, 1000] (m)", maxObstacleHeight};
 	if (!isMember(groundReturns))
 		return TInvalidOption{"groundReturns", "a known meaning", double(groundReturns)};
+	if (!(insertionThreads >= 1 && insertionThreads <= kMaxInsertionThreads))
+		return TInvalidOption{"insertionThreads", "in [1, 64]", double(insertionThreads)};
 	return std::nullopt;
 }
 
@@ -347,6 +349,7 @@ void CEvidentialGridMap2D::TInsertionOptions::loadFromConfigFile(
 	detail::readDouble(source, section, "minObstacleHeight", o.minObstacleHeight);
 	detail::readDouble(source, section, "maxObstacleHeight", o.maxObstacleHeight);
 	detail::readEnum(source, section, "groundReturns", o.groundReturns);
+	detail::readCount(source, section, "insertionThreads", o.insertionThreads);
 	// The value in the message is the text of the file, as the user wrote it.
 	detail::throwIfInvalid(source, section, o.firstInvalid());
 	*this = o;
@@ -395,6 +398,8 @@ void CEvidentialGridMap2D::TInsertionOptions::saveToConfigFile(
 			   "m above the ground where they end (higher points: nothing)");
 	writeValue(target, section, "groundReturns", groundReturns,
 			   "what a ground point proves: FreeSpace or Nothing");
+	writeValue(target, section, "insertionThreads", double(insertionThreads),
+			   "threads that fuse an observation's cells, [1, 64]; the same map");
 }
 
 void CEvidentialGridMap2D::TInsertionOptions::dumpToTextStream(

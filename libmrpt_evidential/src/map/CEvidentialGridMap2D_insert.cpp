@@ -105,67 +105,55 @@ void CEvidentialGridMap2D::fusePolarGrid(
 
 void CEvidentialGridMap2D::fuseKeepingConflict(CScanImpacts& impacts)
 {
-	CPolarToCartesian& transform = m_workspace->transform;
+	const CPolarToCartesian& transform = m_workspace->transform;
 	const FusionRule rule = insertionOptions.fusionRule;
 	const ConflictHandling handling = insertionOptions.conflictHandling;
 	const Mass& uniform = transform.uniformMass();
-	auto hits = impacts.cursor();
-	// The uniform runs, cut around the impact cells they hold.
-	const auto forEachRun = [&](std::size_t first, std::size_t count, auto&& run,
-								auto&& single) {
-		hits.splitRun(first, count, run, [&](std::size_t idx, double occupied) {
-			m_grid.markImpact(idx);
-			single(idx, withImpact(uniform, occupied));
-		});
-	};
-	const auto mixed = [&](std::size_t idx, const Mass& observed) {
-		const double hit = hits.occupiedAt(idx);
-		if (hit <= 0.0) return observed;
-		m_grid.markImpact(idx);
-		return withImpact(observed, hit);
-	};
-	const auto conjunctive = [&](auto decays) {
-		const auto single = [&](std::size_t idx, const Mass& observed) {
+	const bool conjunctive =
+		rule == FusionRule::Conjunctive && handling == ConflictHandling::Keep;
+	const auto single = [&](std::size_t idx, const Mass& observed) {
+		if (conjunctive)
 			m_grid.fuseConjunctive(idx, observed);
+		else
+			m_grid.fuse(idx, observed, rule, handling);
+	};
+	// Each band of rows on its own thread, with its own impact cursor.
+	impacts.clearVisits();
+	const GridGeometry& g = geometry();
+	const auto fuseBand = [&](auto decays, const TWorkspace::TFusionBand& band) {
+		auto hits = impacts.cursorFrom(g.index(0, band.firstRow));
+		const auto run = [&](std::size_t from, std::size_t n) {
+			if (conjunctive)
+				for (std::size_t idx = from; idx < from + n; ++idx)
+					m_grid.fuseSimpleFree<decltype(decays)::value, true>(
+						idx, static_cast<float>(uniform.free));
+			else
+				for (std::size_t idx = from; idx < from + n; ++idx) single(idx, uniform);
 		};
-		transform.forEachInformedCell(
-			geometry(),
-			[&](std::size_t idx, const Mass& observed) { single(idx, mixed(idx, observed)); },
-			[&, w = static_cast<float>(uniform.free)](std::size_t first, std::size_t count) {
-				forEachRun(first, count, [&](std::size_t from, std::size_t n) {
-					for (std::size_t idx = from; idx < from + n; ++idx)
-						m_grid.fuseSimpleFree<decltype(decays)::value, true>(idx, w);
-				}, single);
+		transform.visitRows(
+			g, band.firstRow, band.lastRow,
+			[&](std::size_t idx, const Mass& observed) {
+				const double hit = hits.occupiedAt(idx);
+				if (hit > 0.0) m_grid.markImpact(idx);
+				single(idx, hit > 0.0 ? withImpact(observed, hit) : observed);
+			},
+			[&](std::size_t first, std::size_t count) {
+				hits.splitRun(first, count, run, [&](std::size_t idx, double occupied) {
+					m_grid.markImpact(idx);
+					single(idx, withImpact(uniform, occupied));
+				});
 			});
 	};
+	m_workspace->fuseInBands(
+		g, insertionOptions.insertionThreads, [&](const TWorkspace::TFusionBand& band) {
+			if (m_grid.decayRate() > 0.0)
+				fuseBand(std::true_type(), band);
+			else
+				fuseBand(std::false_type(), band);
+		});
 	// The impact cells the visit did not reach: a cloud's farther impacts.
-	const auto fuseUnvisited = [&](auto&& single) {
-		impacts.forEachUnvisited([&](std::size_t idx, double occupied) {
-			m_grid.markImpact(idx);
-			single(idx, withImpact(Mass::vacuous(), occupied));
-		});
-	};
-	if (rule == FusionRule::Conjunctive && handling == ConflictHandling::Keep)
-	{
-		if (m_grid.decayRate() > 0.0)
-			conjunctive(std::true_type());
-		else
-			conjunctive(std::false_type());
-		fuseUnvisited([&](std::size_t idx, const Mass& observed) {
-			m_grid.fuseConjunctive(idx, observed);
-		});
-		return;
-	}
-	const auto single = [&](std::size_t idx, const Mass& observed) {
-		m_grid.fuse(idx, observed, rule, handling);
-	};
-	transform.forEachInformedCell(
-		geometry(),
-		[&](std::size_t idx, const Mass& observed) { single(idx, mixed(idx, observed)); },
-		[&](std::size_t first, std::size_t count) {
-			forEachRun(first, count, [&](std::size_t from, std::size_t n) {
-				for (std::size_t idx = from; idx < from + n; ++idx) single(idx, uniform);
-			}, single);
-		});
-	fuseUnvisited(single);
+	impacts.forEachUnvisited([&](std::size_t idx, double occupied) {
+		m_grid.markImpact(idx);
+		single(idx, withImpact(Mass::vacuous(), occupied));
+	});
 }

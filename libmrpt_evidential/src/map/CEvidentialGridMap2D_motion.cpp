@@ -22,23 +22,24 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 	const TInsertionOptions& io = insertionOptions;
 	CPolarToCartesian& transform = m_workspace->transform;
 	CMotionDetector& motion = m_workspace->motion;
-	motion.begin(
-		{io.motionMinConflict,
-		 static_cast<int>(std::floor(io.motionClearance / getResolution() + 0.5)),
-		 io.motionWindow});
+	const TMotionRules rules{
+		io.motionMinConflict,
+		static_cast<int>(std::floor(io.motionClearance / getResolution() + 0.5)),
+		io.motionWindow};
+	motion.begin(rules);
 	const FusionRule rule = io.fusionRule;
 	const ConflictHandling handling = io.conflictHandling;
 	// Dempster's rule, however it is asked for, has a kernel of its own.
 	const bool dempster = rule == FusionRule::Dempster ||
 		(rule == FusionRule::Conjunctive && handling == ConflictHandling::Normalize);
 	const Mass& uniform = transform.uniformMass();
-	auto hits = impacts.cursor();
 
-	const auto single = [&](std::size_t idx, const Mass& observed, bool impact) {
+	const auto single = [&](CMotionDetector& detector, std::size_t idx, const Mass& observed,
+							bool impact) {
 		const ConflictSplit split = dempster
 			? m_grid.fuseNormalized(idx, observed)
 			: m_grid.fuse(idx, observed, rule, handling);
-		motion.afterFusion(m_grid, idx, split, observed, impact);
+		detector.afterFusion(m_grid, idx, split, observed, impact);
 	};
 	// A free mass w finds an event only in a cell that already has one, or
 	// whose n(O) w reaches motionMinConflict.
@@ -48,28 +49,39 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 	};
 	const double w = uniform.free;
 	const std::uint16_t occupiedBelow = occupiedBelowFor(w);
-	std::vector<std::size_t>& loud = m_workspace->loudCells;
-	const auto fuseRun = [&](auto decays, std::size_t first, std::size_t count) {
-		if (!dempster)
-		{
-			for (std::size_t idx = first; idx < first + count; ++idx)
-				single(idx, uniform, false);
-			return;
-		}
-		// The quiet cells in bulk, then the loud ones one by one, in order.
-		loud.clear();
-		m_grid.fuseQuietFreeRun<decltype(decays)::value>(
-			first, count, static_cast<float>(w), occupiedBelow, loud);
-		for (const std::size_t idx : loud) single(idx, uniform, false);
-	};
-	const auto fuseAll = [&](auto decays) {
-		transform.forEachInformedCell(
-			geometry(),
+	const GridGeometry& g = geometry();
+	motion.judgeArrivalsInMargins(m_grid, [&](std::size_t idx) {
+		const auto cx = static_cast<int>(idx % static_cast<std::size_t>(g.sizeX));
+		const auto cy = static_cast<int>(idx / static_cast<std::size_t>(g.sizeX));
+		return transform.inFreeMargin(g.cellCenterX(cx), g.cellCenterY(cy));
+	});
+
+	// Each band of rows on its own thread: its cells, its impact cursor, its
+	// candidates (every cell is fused by one band, and changes only itself).
+	impacts.clearVisits();
+	const auto fuseBand = [&](auto decays, TWorkspace::TFusionBand& band) {
+		band.motion.begin(rules);
+		auto hits = impacts.cursorFrom(g.index(0, band.firstRow));
+		const auto fuseRun = [&](std::size_t first, std::size_t count) {
+			if (!dempster)
+			{
+				for (std::size_t idx = first; idx < first + count; ++idx)
+					single(band.motion, idx, uniform, false);
+				return;
+			}
+			// The quiet cells in bulk, then the loud ones one by one, in order.
+			band.loud.clear();
+			m_grid.fuseQuietFreeRun<decltype(decays)::value>(
+				first, count, static_cast<float>(w), occupiedBelow, band.loud);
+			for (const std::size_t idx : band.loud) single(band.motion, idx, uniform, false);
+		};
+		transform.visitRows(
+			g, band.firstRow, band.lastRow,
 			[&](std::size_t idx, const Mass& observed) {
 				if (const double hit = hits.occupiedAt(idx); hit > 0.0)
 				{
 					m_grid.markImpact(idx);
-					single(idx, withImpact(observed, hit), true);
+					single(band.motion, idx, withImpact(observed, hit), true);
 				}
 				// Most mixes are along the angle only, a simple free mass: a
 				// quiet cell takes it as the bulk does.
@@ -79,31 +91,27 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 					m_grid.fuseSimpleFree<decltype(decays)::value, false>(
 						idx, static_cast<float>(observed.free));
 				else
-					single(idx, observed, false);
+					single(band.motion, idx, observed, false);
 			},
 			[&](std::size_t first, std::size_t count) {
-				hits.splitRun(
-					first, count,
-					[&](std::size_t from, std::size_t n) { fuseRun(decays, from, n); },
-					[&](std::size_t idx, double occupied) {
-						m_grid.markImpact(idx);
-						single(idx, withImpact(uniform, occupied), true);
-					});
+				hits.splitRun(first, count, fuseRun, [&](std::size_t idx, double occupied) {
+					m_grid.markImpact(idx);
+					single(band.motion, idx, withImpact(uniform, occupied), true);
+				});
 			});
 	};
-	const GridGeometry& g = geometry();
-	motion.judgeArrivalsInMargins(m_grid, [&](std::size_t idx) {
-		const auto cx = static_cast<int>(idx % static_cast<std::size_t>(g.sizeX));
-		const auto cy = static_cast<int>(idx / static_cast<std::size_t>(g.sizeX));
-		return transform.inFreeMargin(g.cellCenterX(cx), g.cellCenterY(cy));
-	});
-	if (m_grid.decayRate() > 0.0)
-		fuseAll(std::true_type());
-	else
-		fuseAll(std::false_type());
+	const std::size_t used =
+		m_workspace->fuseInBands(g, io.insertionThreads, [&](TWorkspace::TFusionBand& band) {
+			if (m_grid.decayRate() > 0.0)
+				fuseBand(std::true_type(), band);
+			else
+				fuseBand(std::false_type(), band);
+		});
+	for (std::size_t b = 0; b < used; ++b) motion.adoptCandidates(m_workspace->bands[b].motion);
+
 	impacts.forEachUnvisited([&](std::size_t idx, double occupied) {
 		m_grid.markImpact(idx);
-		single(idx, withImpact(Mass::vacuous(), occupied), true);
+		single(motion, idx, withImpact(Mass::vacuous(), occupied), true);
 	});
 	motion.settle(m_grid);
 }

@@ -5,11 +5,13 @@
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 #include <mrpt_evidential/scan/CPolarSourceGrid.h>
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 #include <mutex>
 
 #include "insert/MotionDetector.h"
+#include "map/BandWorkers.h"
 #include "insert/PolarToCartesian.h"
 #include "insert/ScanImpacts.h"
 
@@ -22,8 +24,17 @@ struct CEvidentialGridMap2D::TWorkspace
 	CPolarToCartesian transform;
 	CScanImpacts impacts;
 	CMotionDetector motion;
-	/** The loud cells of a free run (see fuseQuietFreeRun()). */
-	std::vector<std::size_t> loudCells;
+	/** A band of the rows a scan informs, fused by one thread, with what it
+	 * collects: its candidate motion events (taken over by `motion` in
+	 * band order) and the loud cells of a free run (fuseQuietFreeRun()). */
+	struct TFusionBand
+	{
+		int firstRow = 0, lastRow = -1;
+		CMotionDetector motion;
+		std::vector<std::size_t> loud;
+	};
+	std::vector<TFusionBand> bands;
+	CBandWorkers bandWorkers;
 	/** A 3-D observation's points in the robot's frame, and its returns by
 	 * sector. */
 	std::vector<mrpt::math::TPoint3Df> cloudPoints;
@@ -32,5 +43,35 @@ struct CEvidentialGridMap2D::TWorkspace
 	 * guards the pointer: readers of the map may race to build it. */
 	std::mutex likelihoodMutex;
 	std::shared_ptr<const LikelihoodField> likelihood;
+
+	/** Cells of the transform's box worth a band of their own: waking a
+	 * worker costs some 20 us, the fusion of this many cells several times
+	 * that. */
+	static constexpr double kCellsPerBand = 40000;
+	/** Visits the rows the transform informs in up to `threads` bands at
+	 * once (fewer for a small scan): fuseBand(band) on each, the bands in row
+	 * order in `bands`; returns the number of bands used. */
+	template <typename FuseBand>
+	std::size_t fuseInBands(const GridGeometry& grid, unsigned threads, FuseBand&& fuseBand)
+	{
+		const CPolarToCartesian::TRows rows = transform.prepareRows(grid);
+		const int count = rows.last - rows.first + 1;
+		if (count <= 0) return 0;
+		const Box& box = transform.box();
+		const double cells = static_cast<double>(count) *
+			std::max(1.0, (box.xMax - box.xMin) / grid.resolution);
+		const auto worth = static_cast<int>(std::clamp(cells / kCellsPerBand, 1.0, 64.0));
+		const auto n = static_cast<std::size_t>(
+			std::min({static_cast<int>(threads), count, worth}));
+		if (bands.size() < n) bands.resize(n);
+		for (std::size_t b = 0; b < n; ++b)
+		{
+			bands[b].firstRow = rows.first + static_cast<int>(b) * count / static_cast<int>(n);
+			bands[b].lastRow =
+				rows.first + static_cast<int>(b + 1) * count / static_cast<int>(n) - 1;
+		}
+		bandWorkers.run(n, [&](std::size_t b) { fuseBand(bands[b]); });
+		return n;
+	}
 };
 }  // namespace mrpt_evidential

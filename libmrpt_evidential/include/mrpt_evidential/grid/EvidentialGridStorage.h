@@ -111,7 +111,9 @@ class EvidentialGridStorage
 	 * stays). */
 	void write(std::size_t idx, const Mass& m)
 	{
-		m_pristine = false;
+		// Read first: threads that write cells of one insertion at once
+		// (beginInsertion() cleared the flag) then share no store.
+		if (m_pristine) m_pristine = false;
 		QuantizedCell& c = m_cells[idx];
 		if (m_keepsConflict)
 			encodeMass(m, c);
