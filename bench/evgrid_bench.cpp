@@ -168,6 +168,7 @@ struct OurOptions
 	bool decay = true;
 	double maxRange = 0, muF = 0, muO = 0, sectorWidthDegrees = 0;
 	unsigned threads = 1;
+	ConflictHandling handling = ConflictHandling::Normalize;
 };
 
 std::unique_ptr<CEvidentialGridMap2D> ourMap(
@@ -187,6 +188,7 @@ std::unique_ptr<CEvidentialGridMap2D> ourMap(
 	if (o.muO > 0) io.muO = o.muO;
 	if (o.sectorWidthDegrees > 0) io.sectorWidth = o.sectorWidthDegrees * M_PI / 180.0;
 	io.insertionThreads = o.threads;
+	io.conflictHandling = o.handling;
 	return map;
 }
 
@@ -423,6 +425,13 @@ const std::vector<SweepCase>& sweepCases()
 			char name[32];
 			std::snprintf(name, sizeof(name), "muF%.2g-muO%.2g", muF, muO);
 			out.push_back({name, ScanKind::Stock, o});
+		}
+		// The seed's conjunctive grid, which keeps conflict (no motion layer).
+		for (const ScanKind kind : {ScanKind::Stock, ScanKind::Sena})
+		{
+			OurOptions o;
+			o.handling = ConflictHandling::Keep;
+			out.push_back({"keepConflict", kind, o});
 		}
 		for (const double degrees : {0.25, 2.0})
 		{

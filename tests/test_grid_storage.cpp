@@ -491,3 +491,46 @@ TEST(GridStorage, QuietFreeRunsFuseAsCellByCellAndListTheLoudInOrder)
 				}
 			}
 }
+
+TEST(GridStorage, FreeRunsKeepingConflictFuseAsCellByCell)
+{
+	for (const double rate : {0.0, 0.05})
+		for (const std::size_t count : {0, 1, 3, 4, 6, 9, 397})
+		{
+			const auto grid = [&] {
+				EvidentialGridStorage g;
+				g.reset(0.0, 4.0, 0.0, 1.0, 0.1, 1000);
+				g.setDecayRate(rate);
+				std::mt19937 rng(11);
+				std::uniform_real_distribution<double> unit(0.0, 1.0);
+				for (int scan = 0; scan < 5; ++scan)
+				{
+					g.beginInsertion(50.0 + 0.9 * scan);
+					for (std::size_t idx = 0; idx < g.geometry().cellCount(); ++idx)
+					{
+						if (unit(rng) < 0.4) continue;
+						// Conflict up to total, so that the cap is met too.
+						const double k = unit(rng) < 0.05 ? 1.0 : 0.6 * unit(rng);
+						const double f = (1.0 - k) * unit(rng), o = (1.0 - k - f) * unit(rng);
+						g.write(idx, Mass{k, f, o, 1.0 - k - f - o});
+						if (unit(rng) < 0.2) g.markImpact(idx);
+					}
+				}
+				g.beginInsertion(56.0);
+				return g;
+			};
+			EvidentialGridStorage bulk = grid(), oneByOne = grid();
+			const std::size_t first = 3;
+			const float w = 0.41f;
+			if (rate > 0.0)
+				bulk.fuseFreeRunKeepingConflict<true>(first, count, w);
+			else
+				bulk.fuseFreeRunKeepingConflict<false>(first, count, w);
+			for (std::size_t idx = first; idx < first + count; ++idx)
+				if (rate > 0.0)
+					oneByOne.fuseSimpleFree<true, true>(idx, w);
+				else
+					oneByOne.fuseSimpleFree<false, true>(idx, w);
+			ASSERT_TRUE(bulk.cells() == oneByOne.cells()) << rate << " " << count;
+		}
+}

@@ -124,9 +124,8 @@ void CEvidentialGridMap2D::fuseKeepingConflict(CScanImpacts& impacts)
 		auto hits = impacts.cursorFrom(g.index(0, band.firstRow));
 		const auto run = [&](std::size_t from, std::size_t n) {
 			if (conjunctive)
-				for (std::size_t idx = from; idx < from + n; ++idx)
-					m_grid.fuseSimpleFree<decltype(decays)::value, true>(
-						idx, static_cast<float>(uniform.free));
+				m_grid.fuseFreeRunKeepingConflict<decltype(decays)::value>(
+					from, n, static_cast<float>(uniform.free));
 			else
 				for (std::size_t idx = from; idx < from + n; ++idx) single(idx, uniform);
 		};
