@@ -91,13 +91,6 @@ class CScanImpacts
 	   private:
 		std::vector<TImpactCell>::iterator m_it, m_end;
 	};
-	/** A cursor from the start; the visited marks of an earlier walk are
-	 * cleared. */
-	CCursor cursor()
-	{
-		clearVisits();
-		return cursorFrom(0);
-	}
 	/** Clears the visited marks of an earlier walk. */
 	void clearVisits()
 	{
