@@ -14,9 +14,43 @@ namespace
  * within kColumnReach of the robot: mostly ground, even where the ground is
  * a small share of the points (walls and crowns stand on it). */
 constexpr double kColumn = 1.0, kColumnReach = 40.0;
-/** RANSAC's tries: with ground in 40 % of the columns and more, the chance
- * that no try draws three ground points is below 1e-5. */
+/** RANSAC's tries at most: with ground in 40 % of the columns and more, the
+ * chance that no try draws three ground points is below kMissRisk. The
+ * search stops sooner once the best plane's share of the columns makes that
+ * chance as small (most clouds have ground in most columns). */
 constexpr int kTries = 200;
+constexpr double kMissRisk = 1e-5;
+
+/** The tries after which a plane holding `share` of the sample has been
+ * drawn at least once but with a chance below kMissRisk. */
+int triesFor(double share)
+{
+	const double allThree = share * share * share;
+	if (!(allThree > 0.0)) return kTries;
+	if (allThree >= 1.0) return 1;
+	return static_cast<int>(std::min<double>(
+		kTries, std::ceil(std::log(kMissRisk) / std::log1p(-allThree))));
+}
+
+/** RANSAC's sample, one array per coordinate: counting the inliers of a
+ * plane is then one loop the compiler vectorizes. */
+struct TSample
+{
+	std::vector<float> x, y, z;
+	void add(const mrpt::math::TPoint3Df& p) { x.push_back(p.x), y.push_back(p.y), z.push_back(p.z); }
+	std::size_t size() const { return x.size(); }
+	mrpt::math::TPoint3Df operator[](std::size_t i) const { return {x[i], y[i], z[i]}; }
+	/** How many points lie within `distance` of `plane`, along z. */
+	std::size_t inliersOf(const TGroundPlane& plane, double distance) const
+	{
+		const auto a = static_cast<float>(plane.a), b = static_cast<float>(plane.b),
+				   c = static_cast<float>(plane.c), d = static_cast<float>(distance);
+		std::size_t count = 0;
+		for (std::size_t i = 0, n = size(); i < n; ++i)
+			count += std::abs(z[i] - (a * x[i] + b * y[i] + c)) <= d;
+		return count;
+	}
+};
 
 /** The plane through three points, if they span one that is not steeper
  * than the rules allow. */
@@ -85,32 +119,38 @@ std::optional<TGroundPlane> fitGroundPlane(
 	if (low.size() < std::max<std::size_t>(fit.minInliers, 3)) return std::nullopt;
 
 	constexpr auto side = static_cast<std::size_t>(2 * kColumnReach / kColumn);
+	// Each column's lowest height beside its point: no lookup through the
+	// points, and (the offsets being >= 0) truncation is the floor.
 	std::vector<int> lowest(side * side, -1);
+	std::vector<float> lowestZ(side * side, HUGE_VALF);
 	for (std::size_t i = 0; i < low.size(); ++i)
 	{
-		const double cx = std::floor((low[i].x + kColumnReach) / kColumn);
-		const double cy = std::floor((low[i].y + kColumnReach) / kColumn);
-		if (!(cx >= 0 && cy >= 0 && cx < side && cy < side)) continue;
-		int& slot = lowest[static_cast<std::size_t>(cx) + side * static_cast<std::size_t>(cy)];
-		if (slot < 0 || low[i].z < low[static_cast<std::size_t>(slot)].z) slot = static_cast<int>(i);
+		const double fx = (low[i].x + kColumnReach) / kColumn;
+		const double fy = (low[i].y + kColumnReach) / kColumn;
+		if (!(fx >= 0 && fy >= 0 && fx < side && fy < side)) continue;
+		const std::size_t column =
+			static_cast<std::size_t>(fx) + side * static_cast<std::size_t>(fy);
+		if (low[i].z < lowestZ[column])
+			lowestZ[column] = low[i].z, lowest[column] = static_cast<int>(i);
 	}
-	std::vector<mrpt::math::TPoint3Df> sample;
+	TSample sample;
 	for (const int i : lowest)
-		if (i >= 0) sample.push_back(low[static_cast<std::size_t>(i)]);
+		if (i >= 0) sample.add(low[static_cast<std::size_t>(i)]);
 	if (sample.size() < 3) return std::nullopt;
 
 	std::minstd_rand rng(1);
 	std::uniform_int_distribution<std::size_t> pick(0, sample.size() - 1);
 	std::optional<TGroundPlane> best;
 	std::size_t bestCount = 0;
-	for (int t = 0; t < kTries; ++t)
+	for (int t = 0, tries = kTries; t < tries; ++t)
 	{
 		const auto plane = planeThrough(
 			sample[pick(rng)], sample[pick(rng)], sample[pick(rng)], fit.maxSlope);
 		if (!plane || !(plane->c <= top && plane->c >= bottom)) continue;
-		std::size_t count = 0;
-		for (const auto& p : sample) count += std::abs(plane->heightOf(p)) <= fit.inlierDistance;
-		if (count > bestCount) bestCount = count, best = plane;
+		const std::size_t count = sample.inliersOf(*plane, fit.inlierDistance);
+		if (count <= bestCount) continue;
+		bestCount = count, best = plane;
+		tries = triesFor(static_cast<double>(count) / static_cast<double>(sample.size()));
 	}
 	if (!best) return std::nullopt;
 	std::size_t inliers = 0;

@@ -44,8 +44,9 @@ struct TGroundFit
 };
 
 /** The plane most of the cloud's low points lie on (RANSAC on the lowest
- * candidate of each square metre around the robot, then least squares on
- * the inliers among all candidates), or
+ * candidate of each square metre around the robot, up to 200 tries and
+ * fewer once the best plane holds most of them, then least squares on the
+ * inliers among all candidates), or
  * nothing when no plane meets `fit`'s rules. Of two planes with as many
  * inliers the first found wins; the ground of a lidar scan holds most of
  * its points below the sensor, so a car's roof rarely competes. `points` are in the robot's
