@@ -175,6 +175,63 @@ TEST(GridStorage, GrowthKeepsCellsInPlace)
 	EXPECT_EQ(s.geometry().xMin, before.xMin);
 }
 
+TEST(GridStorage, GrowthAlongAPathMovesTheCellsAFewTimesOnly)
+{
+	// A grid that grows 0.5 m at a time, 400 times to the east and now and
+	// then south, as a robot's path makes it grow: each cell keeps its
+	// coordinates and mass, new cells are vacuous, and the cells move to a
+	// new block a few times, not at each growth.
+	EvidentialGridStorage s;
+	constexpr std::size_t kBudget = 2'000'000;
+	s.reset(0.0, 2.0, 0.0, 2.0, 0.05, kBudget);
+	s.beginInsertion(0.0);
+	std::vector<std::pair<double, double>> written;
+	int moves = 0;
+	for (int step = 0; step < 400; ++step)
+	{
+		const double x = 0.5 * step + 0.01, y = -0.02 * step;
+		const QuantizedCell* before = s.cells().data();
+		ASSERT_TRUE(s.growToInclude(x, x + 2.0, y, y + 2.0, 0.0, kBudget)) << step;
+		moves += s.cells().data() != before;
+		const GridGeometry& g = s.geometry();
+		ASSERT_LE(g.cellCount(), kBudget);
+		ASSERT_LE(s.cells().size(), kBudget);
+		if (step % 7 == 0)
+		{
+			// Off the cells' edges, where rounding may pick either cell.
+			s.write(g.index(g.cellX(x + 1.0), g.cellY(y + 1.013)), Mass::simpleOccupied(0.6));
+			written.emplace_back(x + 1.0, y + 1.013);
+		}
+	}
+	EXPECT_LE(moves, 20);
+	const GridGeometry& g = s.geometry();
+	EXPECT_TRUE(g.firstIndex > 0 || g.stride() > static_cast<std::size_t>(g.sizeX));  // room kept
+	std::size_t informed = 0;
+	g.forEachIndex([&](std::size_t i) { informed += s.read(i) != Mass::vacuous(); });
+	EXPECT_EQ(informed, written.size());
+	for (const auto& [x, y] : written)
+		EXPECT_MASS_NEAR(
+			s.read(g.index(g.cellX(x), g.cellY(y))), Mass::simpleOccupied(0.6), 2.0 / kMassScale)
+			<< x << " " << y;
+	// Packed, the cells are those of a grid that holds them row by row.
+	const std::vector<QuantizedCell> packed = s.packedCells();
+	ASSERT_EQ(packed.size(), g.cellCount());
+	for (int cy = 0; cy < g.sizeY; cy += 13)
+		for (int cx = 0; cx < g.sizeX; cx += 11)
+			ASSERT_EQ(packed[g.packed().index(cx, cy)], s.cells()[g.index(cx, cy)]);
+}
+
+TEST(GridStorage, GrowthRoomStaysWithinTheBudget)
+{
+	// Near the budget the block gets no room: every cell still fits.
+	EvidentialGridStorage s;
+	s.reset(0.0, 1.0, 0.0, 1.0, 0.1, 150);
+	ASSERT_TRUE(s.growToInclude(0.0, 1.4, 0.0, 1.0, 0.0, 150));
+	EXPECT_EQ(s.geometry().cellCount(), 140u);
+	EXPECT_LE(s.cells().size(), 150u);
+	EXPECT_FALSE(s.growToInclude(0.0, 1.6, 0.0, 1.0, 0.0, 150));
+}
+
 TEST(GridStorage, DecayFollowsTheExponentialLaw)
 {
 	EvidentialGridStorage s;

@@ -25,6 +25,7 @@
 #include "support/bounded_child.h"
 #include "support/largest_allocation.h"
 #include "support/map_bytes.h"
+#include "support/maps.h"
 #include "support/scans.h"
 #include "support/test_helpers.h"
 
@@ -33,6 +34,7 @@ using mrpt_evidential::test::deserialize;
 using mrpt_evidential::test::largestAllocation;
 using mrpt_evidential::test::resetLargestAllocation;
 using mrpt_evidential::test::serialize;
+using mrpt_evidential::test::storedIndex;
 using mrpt_evidential::test::wall;
 using mrpt::poses::CPose3D;
 using mrpt::serialization::archiveFrom;
@@ -146,7 +148,7 @@ void expectSameMap(const CEvidentialGridMap2D& a, const CEvidentialGridMap2D& b)
 	EXPECT_EQ(a.latestTime(), b.latestTime());
 	EXPECT_EQ(a.storage().decayRate(), b.storage().decayRate());
 	EXPECT_EQ(a.storage().stampTimes(), b.storage().stampTimes());
-	EXPECT_EQ(a.storage().cells(), b.storage().cells());
+	EXPECT_EQ(a.storage().packedCells(), b.storage().packedCells());
 	for (int cy = 0; cy < a.getSizeY(); ++cy)
 		for (int cx = 0; cx < a.getSizeX(); ++cx)
 			ASSERT_EQ(
@@ -427,7 +429,7 @@ TEST(MapIO, VersionOneFilesStillLoad)
 	ASSERT_EQ(back.geometry().cellCount(), cells);
 	for (std::size_t i = 0; i < cells; ++i)
 	{
-		ASSERT_EQ(back.storage().read(i), original.storage().read(i)) << i;
+		ASSERT_EQ(back.storage().read(i), original.storage().read(storedIndex(original, i))) << i;
 		const Mass m = back.storage().read(i);
 		ASSERT_EQ(back.storage().heldImpact(i), m.occupied > m.free) << i;
 	}
@@ -443,7 +445,7 @@ TEST(MapIO, VersionOneFilesStillLoad)
 	{
 		const Mass m = motion.storage().read(i);
 		ASSERT_EQ(m.conflict, 0.0);
-		ASSERT_MASS_NEAR_AT(m, normalized(original.storage().read(i)), 2e-4, i, 0);
+		ASSERT_MASS_NEAR_AT(m, normalized(original.storage().read(storedIndex(original, i))), 2e-4, i, 0);
 		ASSERT_EQ(motion.storage().event(i), CellEvent::None);
 	}
 }
@@ -469,7 +471,7 @@ TEST(MapIO, VersionZeroFilesStillLoad)
 	{
 		// Version 0's cell: the masses rounded, the stamp as it was. These
 		// masses round to values that never pass the scale together.
-		const Mass m = decodeMass(original.storage().cells()[i]);
+		const Mass m = decodeMass(original.storage().packedCells()[i]);
 		put(first + 8 * i, m.conflict);
 		put(first + 8 * i + 2, m.free);
 		put(first + 8 * i + 4, m.occupied);
@@ -480,7 +482,8 @@ TEST(MapIO, VersionZeroFilesStillLoad)
 	ASSERT_EQ(back.geometry().cellCount(), cells);
 	for (std::size_t i = 0; i < cells; ++i)
 		ASSERT_MASS_NEAR_AT(
-			back.storage().read(i), original.storage().read(i), 2.0 / kMassScale, i, 0);
+			back.storage().read(i), original.storage().read(storedIndex(original, i)), 2.0 / kMassScale, i,
+			0);
 
 	// A version-0 cell whose masses pass 1 together is refused, as before.
 	putLE(bytes, first, 40000, 2);

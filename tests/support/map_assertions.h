@@ -27,11 +27,16 @@ inline ::testing::AssertionResult sameCells(
 	if (a.getSizeX() != b.getSizeX() || a.getSizeY() != b.getSizeY() ||
 		a.getXMin() != b.getXMin() || a.getYMin() != b.getYMin())
 		return ::testing::AssertionFailure() << "geometries differ";
-	for (std::size_t i = 0; i < a.geometry().cellCount(); ++i)
-		if (maxAbsDifference(a.storage().read(i), b.storage().read(i)) > tol)
-			return ::testing::AssertionFailure()
-				<< "cell " << i << ": " << a.storage().read(i) << " vs "
-				<< b.storage().read(i);
+	// Cell by cell: either grid may keep room between its rows.
+	const GridGeometry &ga = a.geometry(), &gb = b.geometry();
+	for (int cy = 0; cy < ga.sizeY; ++cy)
+		for (int cx = 0; cx < ga.sizeX; ++cx)
+		{
+			const Mass ma = a.storage().read(ga.index(cx, cy)), mb = b.storage().read(gb.index(cx, cy));
+			if (maxAbsDifference(ma, mb) > tol)
+				return ::testing::AssertionFailure()
+					<< "cell (" << cx << ", " << cy << "): " << ma << " vs " << mb;
+		}
 	return ::testing::AssertionSuccess();
 }
 }  // namespace mrpt_evidential::test

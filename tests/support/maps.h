@@ -21,21 +21,29 @@ inline std::string mapDefect(const CEvidentialGridMap2D& map)
 	if (cells > map.maxCells())
 		out << cells << " cells exceed the budget of " << map.maxCells();
 	else
-		for (std::size_t i = 0; i < cells; ++i)
-			if (!map.storage().read(i).isValid(1e-9))
-			{
+		map.geometry().forEachIndex([&](std::size_t i) {
+			if (out.tellp() == 0 && !map.storage().read(i).isValid(1e-9))
 				out << "cell " << i << " holds " << map.storage().read(i);
-				break;
-			}
+		});
 	return out.str();
+}
+
+/** The storage index of a map's cell i, counted cx + sizeX cy (as files
+ * hold them). */
+inline std::size_t storedIndex(const CEvidentialGridMap2D& map, std::size_t i)
+{
+	const GridGeometry& g = map.geometry();
+	const auto sx = static_cast<std::size_t>(g.sizeX);
+	return g.index(static_cast<int>(i % sx), static_cast<int>(i / sx));
 }
 
 /** How many cells hold anything but the vacuous mass. */
 inline std::size_t informedCells(const CEvidentialGridMap2D& map)
 {
 	std::size_t n = 0;
-	for (std::size_t i = 0; i < map.geometry().cellCount(); ++i)
+	map.geometry().forEachIndex([&](std::size_t i) {
 		if (map.storage().read(i) != Mass::vacuous()) ++n;
+	});
 	return n;
 }
 }  // namespace mrpt_evidential::test

@@ -23,6 +23,9 @@ constexpr double kMaxKeptEventExponent = 100.0;
 /** A rebase keeps at most this many event times: the other half of the
  * table is room for new insertions. */
 constexpr std::size_t kMaxKeptEventTimes = EvidentialGridStorage::kMaxStamps / 2;
+/** Room a grid that outgrows its block gets beyond each side that grows, as
+ * a share of its extent along that axis. */
+constexpr double kGrowthRoom = 0.5;
 
 std::uint16_t ceilingFor(bool keepsConflict)
 {
@@ -75,24 +78,67 @@ bool EvidentialGridStorage::growToInclude(
 	if (sx * sy > static_cast<double>(maxCells) ||
 		std::max(sx, sy) > std::numeric_limits<int>::max())
 		return false;
-
 	GridGeometry grown{
 		g.xMin - addLeft * res, g.yMin - addDown * res, res, static_cast<int>(sx),
 		static_cast<int>(sy)};
 	if (!GridGeometry::withinLimits(
 			grown.xMin, grown.xMax(), grown.yMin, grown.yMax(), res))
 		return false;
+
+	// The room kept around the cells, in cells on each side.
+	const auto stride = static_cast<double>(g.stride());
+	const double rows = stride > 0 ? static_cast<double>(m_cells.size()) / stride : 0;
+	const double ox = stride > 0 ? static_cast<double>(g.firstIndex % g.stride()) : 0;
+	const double oy = stride > 0 ? static_cast<double>(g.firstIndex / g.stride()) : 0;
+	if (g.cellCount() > 0 && addLeft <= ox && addRight <= stride - ox - g.sizeX &&
+		addDown <= oy && addUp <= rows - oy - g.sizeY)
+	{
+		// Within the room: the new cells are vacuous already, none moves.
+		grown.rowStride = g.stride();
+		grown.firstIndex = static_cast<std::size_t>(oy - addDown) * g.stride() +
+			static_cast<std::size_t>(ox - addLeft);
+		m_geometry = grown;
+		return true;
+	}
+
+	// A new block, with room beyond each side that grows for as many cells
+	// again as half the grid's extent: a grid that keeps growing one way is
+	// copied a few times in all, not every few metres. The room stays
+	// within the budget of cells.
+	const double spareX = std::floor(kGrowthRoom * sx), spareY = std::floor(kGrowthRoom * sy);
+	double roomLeft = growLeft ? spareX : 0, roomRight = growRight ? spareX : 0;
+	double roomDown = growDown ? spareY : 0, roomUp = growUp ? spareY : 0;
+	if ((sx + roomLeft + roomRight) * (sy + roomDown + roomUp) > static_cast<double>(maxCells) ||
+		sx + roomLeft + roomRight > std::numeric_limits<int>::max())
+		roomLeft = roomRight = roomDown = roomUp = 0;
+	const auto width = static_cast<std::size_t>(sx + roomLeft + roomRight);
+	const auto height = static_cast<std::size_t>(sy + roomDown + roomUp);
+	grown.rowStride = width;
+	grown.firstIndex =
+		static_cast<std::size_t>(roomDown) * width + static_cast<std::size_t>(roomLeft);
 	// New cells are vacuous: their stamp does not matter, vacuous never decays.
-	std::vector<QuantizedCell> cells(grown.cellCount(), QuantizedCell{});
+	std::vector<QuantizedCell> cells(width * height, QuantizedCell{});
 	const int dx = static_cast<int>(addLeft), dy = static_cast<int>(addDown);
 	for (int cy = 0; cy < g.sizeY; ++cy)
 		std::copy_n(
-			m_cells.begin() + static_cast<std::ptrdiff_t>(g.index(0, cy)),
-			g.sizeX,
+			m_cells.begin() + static_cast<std::ptrdiff_t>(g.index(0, cy)), g.sizeX,
 			cells.begin() + static_cast<std::ptrdiff_t>(grown.index(dx, cy + dy)));
 	m_cells.swap(cells);
 	m_geometry = grown;
 	return true;
+}
+
+std::vector<QuantizedCell> EvidentialGridStorage::packedCells() const
+{
+	const GridGeometry& g = m_geometry;
+	std::vector<QuantizedCell> out;
+	out.reserve(g.cellCount());
+	for (int cy = 0; cy < g.sizeY; ++cy)
+	{
+		const auto row = m_cells.begin() + static_cast<std::ptrdiff_t>(g.index(0, cy));
+		out.insert(out.end(), row, row + g.sizeX);
+	}
+	return out;
 }
 
 void EvidentialGridStorage::setDecayRate(double perSecond)
@@ -293,7 +339,7 @@ void EvidentialGridStorage::assign(
 			 (std::max(c.free, c.occupied) > ceiling ||
 			  (eventOf(c) != CellEvent::None && eventStampOf(c) >= stampTimes.size()))))
 			throw std::invalid_argument("a cell holds an invalid mass, stamp or event");
-	m_geometry = geometry;
+	m_geometry = geometry.packed();
 	m_cells = std::move(cells);
 	m_stampTimes = std::move(stampTimes);
 	m_insertions = insertions;

@@ -36,8 +36,7 @@ bool CMotionDetector::nearStaticStructure(
 	const EvidentialGridStorage& grid, std::size_t idx) const
 {
 	const GridGeometry& g = grid.geometry();
-	const int cx = static_cast<int>(idx % static_cast<std::size_t>(g.sizeX));
-	const int cy = static_cast<int>(idx / static_cast<std::size_t>(g.sizeX));
+	const int cx = g.columnOf(idx), cy = g.rowOf(idx);
 	const int r = m_rules.clearanceCells;
 	const int x0 = std::max(0, cx - r), x1 = std::min(g.sizeX - 1, cx + r);
 	for (int y = std::max(0, cy - r); y <= std::min(g.sizeY - 1, cy + r); ++y)

@@ -202,8 +202,7 @@ CEvidentialGridMap2D::TDecisionCounts CEvidentialGridMap2D::countDecisions()
 	const
 {
 	TDecisionCounts counts;
-	for (std::size_t i = 0; i < geometry().cellCount(); ++i)
-	{
+	geometry().forEachIndex([&](std::size_t i) {
 		switch (decide(m_grid.read(i)))
 		{
 			case Decision::Free: ++counts.free; break;
@@ -211,7 +210,7 @@ CEvidentialGridMap2D::TDecisionCounts CEvidentialGridMap2D::countDecisions()
 			case Decision::Unknown: ++counts.unknown; break;
 			case Decision::Conflict: ++counts.conflict; break;
 		}
-	}
+	});
 	return counts;
 }
 

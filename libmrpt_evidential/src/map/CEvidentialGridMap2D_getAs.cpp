@@ -253,12 +253,18 @@ void CEvidentialGridMap2D::getAsPicture(
 void CEvidentialGridMap2D::getAsChangesImage(
 	const TMapChanges& changes, mrpt::img::CImage& img, bool withLegend) const
 {
-	std::vector<Motion> motion(geometry().cellCount(), Motion::None);
+	// The changes are numbered cx + sizeX cy; the grid's own indices may
+	// leave room between rows.
+	const GridGeometry& g = geometry();
+	std::vector<Motion> motion(g.cellCount(), Motion::None);
 	for (const std::size_t i : changes.appeared)
 		if (i < motion.size()) motion[i] = Motion::Appeared;
 	for (const std::size_t i : changes.disappeared)
 		if (i < motion.size()) motion[i] = Motion::Disappeared;
-	paintMotion(img, [&](std::size_t idx) { return motion[idx]; });
+	const GridGeometry packed = g.packed();
+	paintMotion(img, [&](std::size_t idx) {
+		return motion[packed.index(g.columnOf(idx), g.rowOf(idx))];
+	});
 	if (withLegend)
 		img = detail::withLegend(
 			img, geometry().resolution, legendOf(kMotionPicture, renderingOptions));

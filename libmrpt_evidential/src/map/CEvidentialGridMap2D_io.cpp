@@ -212,23 +212,26 @@ void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 
 	// Explicit little-endian bytes: independent of the host's byte order and
 	// of the struct's layout.
+	// Row by row: the file holds the cells packed, not the room kept
+	// between rows for growth.
 	const std::vector<QuantizedCell>& cells = m_grid.cells();
-	std::vector<std::uint8_t> block(
-		std::min(cells.size(), kCellsPerBlock) * kBytesPerCell);
-	for (std::size_t first = 0; first < cells.size(); first += kCellsPerBlock)
-	{
-		const std::size_t n = std::min(kCellsPerBlock, cells.size() - first);
-		for (std::size_t i = 0; i < n; ++i)
+	const auto sizeX = static_cast<std::size_t>(g.sizeX);
+	std::vector<std::uint8_t> block(std::min(sizeX, kCellsPerBlock) * kBytesPerCell);
+	for (int cy = 0; cy < g.sizeY; ++cy)
+		for (std::size_t first = 0; first < sizeX; first += kCellsPerBlock)
 		{
-			const QuantizedCell& c = cells[first + i];
-			std::uint8_t* p = &block[i * kBytesPerCell];
-			putU16(p, c.aside);
-			putU16(p + 2, c.free);
-			putU16(p + 4, c.occupied);
-			putU16(p + 6, c.stamp);
+			const std::size_t n = std::min(kCellsPerBlock, sizeX - first);
+			const QuantizedCell* row = cells.data() + g.index(0, cy) + first;
+			for (std::size_t i = 0; i < n; ++i)
+			{
+				std::uint8_t* p = &block[i * kBytesPerCell];
+				putU16(p, row[i].aside);
+				putU16(p + 2, row[i].free);
+				putU16(p + 4, row[i].occupied);
+				putU16(p + 6, row[i].stamp);
+			}
+			ar.WriteBuffer(block.data(), n * kBytesPerCell);
 		}
-		ar.WriteBuffer(block.data(), n * kBytesPerCell);
-	}
 
 	out << ar.hash();  // little-endian, as the archive writes integers
 }

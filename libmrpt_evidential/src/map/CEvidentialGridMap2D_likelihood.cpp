@@ -286,11 +286,9 @@ std::shared_ptr<const CEvidentialGridMap2D::LikelihoodField>
 		std::ceil(opts.maxCorrsDistance / map.resolution);
 	const int margin = fieldMargin(map, reachCells);
 	GridGeometry& g = field->geometry;
-	g.resolution = map.resolution;
-	g.xMin = map.xMin - margin * map.resolution;
-	g.yMin = map.yMin - margin * map.resolution;
-	g.sizeX = map.sizeX + 2 * margin;
-	g.sizeY = map.sizeY + 2 * margin;
+	g = GridGeometry{
+		map.xMin - margin * map.resolution, map.yMin - margin * map.resolution,
+		map.resolution, map.sizeX + 2 * margin, map.sizeY + 2 * margin};
 	// No vertical distance reaches the field's height: capping there changes
 	// nothing and keeps reach + 1 from overflowing.
 	const auto reach = static_cast<std::int32_t>(

@@ -43,8 +43,7 @@ bool leansOccupied(const Mass& m) { return m.occupied > m.free && m.occupied >= 
 std::optional<std::size_t> CEvidentialGridMap2D::cellOfOther(
 	const GridGeometry& other, std::size_t idx, int offsetX, int offsetY) const
 {
-	const auto sx = static_cast<std::size_t>(other.sizeX);
-	const int cx = static_cast<int>(idx % sx) + offsetX, cy = static_cast<int>(idx / sx) + offsetY;
+	const int cx = other.columnOf(idx) + offsetX, cy = other.rowOf(idx) + offsetY;
 	if (!geometry().inside(cx, cy)) return std::nullopt;
 	return geometry().index(cx, cy);
 }
@@ -59,25 +58,27 @@ void CEvidentialGridMap2D::fuseMap(
 		throw std::invalid_argument(
 			"the map cannot grow to hold the other's extent within its budget of " +
 			std::to_string(m_maxCells) + " cells (maxCells)");
-	const auto [ox, oy] = latticeOffset(geometry(), g);
+	// Plain ints: lambdas may not capture structured bindings in C++17.
+	const std::pair<int, int> offset = latticeOffset(geometry(), g);
+	const int ox = offset.first, oy = offset.second;
 	insertionOptions.conflictHandling = handling;
 	m_grid.setKeepsConflict(handling == ConflictHandling::Keep);
 	if (!m_grid.keepsConflict())
-		for (std::size_t i = 0, n = geometry().cellCount(); i < n; ++i)
+		geometry().forEachIndex([&](std::size_t i) {
 			if (m_grid.event(i) != CellEvent::None) m_grid.setEvent(i, CellEvent::None);
+		});
 	if (other.isEmpty()) return;
 	m_grid.beginInsertion(std::max(latestTime(), other.latestTime()));
 	invalidateLikelihoodCache();
 	const EvidentialGridStorage& theirs = other.storage();
-	for (std::size_t j = 0, n = g.cellCount(); j < n; ++j)
-	{
+	g.forEachIndex([&](std::size_t j) {
 		const Mass m = theirs.read(j);
-		if (!seen(m)) continue;
+		if (!seen(m)) return;
 		const auto idx = cellOfOther(g, j, ox, oy);
-		if (!idx) continue;  // cannot happen: the grid holds other's extent
+		if (!idx) return;  // cannot happen: the grid holds other's extent
 		m_grid.fuse(*idx, m, rule, handling);
 		if (theirs.heldImpact(j)) m_grid.markImpact(*idx);
-	}
+	});
 }
 
 CEvidentialGridMap2D::TMapChanges CEvidentialGridMap2D::changesSince(
@@ -113,6 +114,7 @@ CEvidentialGridMap2D::TMapChanges CEvidentialGridMap2D::changesSince(
 		return false;
 	};
 	TMapChanges out;
+	const GridGeometry packed = g.packed();  // what TMapChanges holds
 	for (int cy = 0; cy < g.sizeY; ++cy)
 		for (int cx = 0; cx < g.sizeX; ++cx)
 		{
@@ -125,7 +127,7 @@ CEvidentialGridMap2D::TMapChanges CEvidentialGridMap2D::changesSince(
 			const bool appeared = split.appeared >= minConflict;
 			const bool left = split.disappeared >= minConflict;
 			if ((!appeared && !left) || nearStructure(cx, cy)) continue;
-			(appeared ? out.appeared : out.disappeared).push_back(idx);
+			(appeared ? out.appeared : out.disappeared).push_back(packed.index(cx, cy));
 		}
 	return out;
 }

@@ -51,9 +51,8 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 	const std::uint16_t occupiedBelow = occupiedBelowFor(w);
 	const GridGeometry& g = geometry();
 	motion.judgeArrivalsInMargins(m_grid, [&](std::size_t idx) {
-		const auto cx = static_cast<int>(idx % static_cast<std::size_t>(g.sizeX));
-		const auto cy = static_cast<int>(idx / static_cast<std::size_t>(g.sizeX));
-		return transform.inFreeMargin(g.cellCenterX(cx), g.cellCenterY(cy));
+		return transform.inFreeMargin(
+			g.cellCenterX(g.columnOf(idx)), g.cellCenterY(g.rowOf(idx)));
 	});
 
 	// Each band of rows on its own thread: its cells, its impact cursor, its
@@ -161,13 +160,11 @@ double CEvidentialGridMap2D::getCellMotionTime(double x, double y) const
 CEvidentialGridMap2D::TMotionCounts CEvidentialGridMap2D::countMotion() const
 {
 	TMotionCounts counts;
-	const std::size_t n = geometry().cellCount();
-	for (std::size_t idx = 0; idx < n; ++idx)
-	{
+	geometry().forEachIndex([&](std::size_t idx) {
 		const Motion m = motionOf(idx);
 		counts.appeared += m == Motion::Appeared;
 		counts.disappeared += m == Motion::Disappeared;
-	}
+	});
 	return counts;
 }
 

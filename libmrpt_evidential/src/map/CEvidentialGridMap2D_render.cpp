@@ -208,9 +208,11 @@ void CEvidentialGridMap2D::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) 
 	// Each class as its own opaque triangles over exactly its cells: MRPT
 	// draws nearer objects first, and the transparent texels of a plane over
 	// the whole grid would hide the classes drawn after it.
-	std::vector<std::uint8_t> classes(g.cellCount());
-	for (std::size_t idx = 0; idx < classes.size(); ++idx)
-		classes[idx] = static_cast<std::uint8_t>(classOf(idx, ro.showMotion));
+	std::vector<std::uint8_t> classes;
+	classes.reserve(g.cellCount());
+	g.forEachIndex([&](std::size_t idx) {
+		classes.push_back(static_cast<std::uint8_t>(classOf(idx, ro.showMotion)));
+	});
 	const auto shown = [&ro](CellClass c) {
 		switch (c)
 		{

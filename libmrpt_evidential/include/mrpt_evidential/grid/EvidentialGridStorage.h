@@ -62,7 +62,11 @@ class EvidentialGridStorage
 
 	/** Grows the grid so that it covers [xMin, xMax] x [yMin, yMax], adding
 	 * `margin` metres beyond each side that has to grow, keeping every cell
-	 * where it is. Does nothing when the box is already covered.
+	 * where it is. Does nothing when the box is already covered. A grid that
+	 * outgrows its memory moves to a block with room beyond the sides that
+	 * grew (half the grid's extent, within `maxCells`), and grows into that
+	 * room later without moving: geometry()'s firstIndex and rowStride then
+	 * change, and the indices of the cells with them.
 	 * \return false (and leaves the grid as it is) if the grown grid would
 	 *  exceed `maxCells` cells or GridGeometry's limits, or a bound is not
 	 *  finite. */
@@ -100,7 +104,7 @@ class EvidentialGridStorage
 	std::size_t insertionCount() const { return m_insertions; }
 
 	/** The mass of a cell as decayed to latestTime() (m(empty) = 0 in a grid
-	 * without conflict). idx < cellCount(). */
+	 * without conflict). idx is geometry().index() of a cell. */
 	Mass read(std::size_t idx) const
 	{
 		const QuantizedCell& c = m_cells[idx];
@@ -127,7 +131,7 @@ class EvidentialGridStorage
 	}
 
 	/** @name Fusing evidence into cells
-	 * Each decays cell idx (< cellCount()) from its stamp to the current
+	 * Each decays cell idx (an index() of the geometry) from its stamp to the current
 	 * insertion, fuses `observed` into it and stamps it with the current
 	 * insertion, so that a cell is always decayed exactly once for the time
 	 * it spent unchanged. Fuse a cell at most once per insertion.
@@ -306,8 +310,12 @@ class EvidentialGridStorage
 	}
 	/** @} */
 
-	/** The stored cells and stamp times, read-only (serialization, tests). */
+	/** The stored cells, read-only, at the indices geometry().index() gives
+	 * (with the room kept for growth: vacuous cells outside the grid). */
 	const std::vector<QuantizedCell>& cells() const { return m_cells; }
+	/** The grid's cells row by row, cx + sizeX cy (what files hold). */
+	std::vector<QuantizedCell> packedCells() const;
+	/** The insertion times of the stamps, oldest first. */
 	const std::vector<double>& stampTimes() const { return m_stampTimes; }
 
 	/** Replaces the whole state with one read from a file. `plainStamps`:

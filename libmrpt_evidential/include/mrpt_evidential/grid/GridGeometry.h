@@ -13,11 +13,18 @@
 namespace mrpt_evidential
 {
 /** Where the cells of a grid lie. Cell (cx, cy) covers
- * [xMin + cx res, xMin + (cx + 1) res) x [yMin + cy res, yMin + (cy + 1) res). */
+ * [xMin + cx res, xMin + (cx + 1) res) x [yMin + cy res, yMin + (cy + 1) res),
+ * and is stored at index(cx, cy): row by row, each row's cells side by side,
+ * the rows `stride()` indices apart from `firstIndex` on. A packed geometry
+ * (the default: firstIndex 0, rowStride 0) numbers the cells cx + sizeX cy;
+ * a grid that grew may keep room around its cells for the next growth
+ * (EvidentialGridStorage), and its rows then lie farther apart. */
 struct GridGeometry
 {
 	double xMin = 0.0, yMin = 0.0, resolution = 0.1;
 	int sizeX = 0, sizeY = 0;
+	/** Index of cell (0, 0), and from one row to the next (0: sizeX). */
+	std::size_t firstIndex = 0, rowStride = 0;
 
 	/** Limits of every grid: bounds within kMaxCoordinate metres of the
 	 * origin, cells of kMinResolution to kMaxResolution metres. Beyond them
@@ -79,10 +86,40 @@ struct GridGeometry
 	{
 		return cx >= 0 && cy >= 0 && cx < sizeX && cy < sizeY;
 	}
+	/** Index step from a row to the next. */
+	std::size_t stride() const
+	{
+		return rowStride > 0 ? rowStride : static_cast<std::size_t>(sizeX);
+	}
+	/** Index of cell (cx, cy), inside(). */
 	std::size_t index(int cx, int cy) const
 	{
-		return static_cast<std::size_t>(cy) * static_cast<std::size_t>(sizeX) +
+		return firstIndex + static_cast<std::size_t>(cy) * stride() +
 			static_cast<std::size_t>(cx);
+	}
+	/** Column and row of the cell at `idx` (an index() of this geometry). */
+	int columnOf(std::size_t idx) const
+	{
+		return static_cast<int>((idx - firstIndex) % stride());
+	}
+	int rowOf(std::size_t idx) const
+	{
+		return static_cast<int>((idx - firstIndex) / stride());
+	}
+	/** Calls f(index) for every cell, row by row. */
+	template <typename F>
+	void forEachIndex(F&& f) const
+	{
+		for (int cy = 0; cy < sizeY; ++cy)
+			for (std::size_t i = index(0, cy), end = i + static_cast<std::size_t>(sizeX); i < end; ++i)
+				f(i);
+	}
+	/** The same cells, numbered cx + sizeX cy. */
+	GridGeometry packed() const
+	{
+		GridGeometry g = *this;
+		g.firstIndex = 0, g.rowStride = 0;
+		return g;
 	}
 };
 
