@@ -10,6 +10,13 @@ namespace
 {
 bool leansOccupied(const Mass& m) { return m.occupied > m.free && m.occupied >= 0.5; }
 
+/** Time of the insertion `k` insertions before the latest (the oldest one
+ * kept, if there are not that many). */
+double insertionTimeBefore(const EvidentialGridStorage& grid, std::size_t k)
+{
+	const std::vector<double>& times = grid.stampTimes();
+	return times.size() > k ? times[times.size() - 1 - k] : times.front();
+}
 }  // namespace
 
 void CMotionDetector::afterFusionOfEventCell(
@@ -60,6 +67,34 @@ bool CMotionDetector::nearStaticStructure(
 	return false;
 }
 
+void CMotionDetector::settleArrival(
+	EvidentialGridStorage& grid, std::size_t idx, CellEvent before)
+{
+	if (!nearStaticStructure(grid, idx))
+	{
+		grid.setEvent(idx, CellEvent::Appeared), m_arrivals.push_back(idx);
+		return;
+	}
+	const double since = grid.eventTime(idx);
+	if (before == CellEvent::Leaving)
+	{
+		// Pending: confirmed by a hit at one of the next insertions.
+		const bool confirmed = !leansOccupied(grid.read(idx)) && since < grid.latestTime() &&
+			since >= insertionTimeBefore(grid, kConfirmationInsertions);
+		if (confirmed) grid.setEventKeepingTime(idx, CellEvent::Appeared), m_arrivals.push_back(idx);
+		return;
+	}
+	// A cell with no event whose time is later than the oldest one was set
+	// back to none by a recent judgement (most often a pending arrival seen
+	// free): a flip, whose new pending arrival keeps that older time.
+	const bool flips = before == CellEvent::None && since > grid.stampTimes().front() &&
+		since >= insertionTimeBefore(grid, kFlipMemory);
+	if (flips)
+		grid.setEventKeepingTime(idx, CellEvent::Leaving);
+	else
+		grid.setEvent(idx, CellEvent::Leaving);
+}
+
 void CMotionDetector::settle(EvidentialGridStorage& grid)
 {
 	for (const TCandidate& c : m_candidates)
@@ -67,16 +102,7 @@ void CMotionDetector::settle(EvidentialGridStorage& grid)
 		const CellEvent before = grid.event(c.index);
 		if (c.event == CellEvent::Appeared)
 		{
-			const bool pending = before == CellEvent::Leaving &&
-				!leansOccupied(grid.read(c.index)) &&
-				grid.eventTime(c.index) < grid.latestTime();
-			if (!nearStaticStructure(grid, c.index))
-				grid.setEvent(c.index, CellEvent::Appeared), m_arrivals.push_back(c.index);
-			else if (pending)
-				grid.setEventKeepingTime(c.index, CellEvent::Appeared),
-					m_arrivals.push_back(c.index);
-			else if (before != CellEvent::Leaving)
-				grid.setEvent(c.index, CellEvent::Leaving);
+			settleArrival(grid, c.index, before);
 			continue;
 		}
 		if (!nearStaticStructure(grid, c.index))

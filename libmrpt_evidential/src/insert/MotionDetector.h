@@ -32,8 +32,12 @@ struct TMotionRules
  *   before(F) observed(O) of at least minConflict). Beside static structure
  *   (a cell that held beams' ends, leans occupied and is not itself a recent
  *   arrival or leaving) that is likely the pose's error: the cell is only
- *   pending (CellEvent::Leaving while it leans free) until a later scan hits
- *   it again.
+ *   pending (CellEvent::Leaving while it leans free) until one of the next
+ *   kConfirmationInsertions insertions hits it again. A thing that arrived
+ *   is hit again at once; a cell that pose error flips beside a wall or a
+ *   thing's face comes and goes, so a cell whose pending arrival was turned
+ *   down (seen free) within the last kFlipMemory insertions starts its next
+ *   one dated from then, too old to be confirmed.
  * - Something left: a cell that leaned occupied and held beams' ends is
  *   seen free, away from static structure. Beside structure, a ray may graze
  *   a wall: while its evidence still leans occupied the cell is only Leaving
@@ -113,6 +117,10 @@ class CMotionDetector
 	{
 		return grid.latestTime() - grid.eventTime(idx) <= m_rules.window;
 	}
+	/** The rules of a pending arrival, in insertions (see the class). */
+	static constexpr std::size_t kConfirmationInsertions = 2, kFlipMemory = 40;
+	/** Settles the candidate arrival at cell idx, whose event was `before`. */
+	void settleArrival(EvidentialGridStorage& grid, std::size_t idx, CellEvent before);
 
 	struct TCandidate
 	{
