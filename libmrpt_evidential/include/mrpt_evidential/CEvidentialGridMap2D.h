@@ -181,7 +181,8 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	/** Number of observations inserted since the last clear(). */
 	std::size_t insertionCount() const { return m_grid.insertionCount(); }
 	/** The cells, for loops that read them all (decay not applied: use
-	 * storage().read()). */
+	 * storage().read(); geometry().forEachIndex() walks the indices, which a
+	 * grown grid spaces out between rows). */
 	const EvidentialGridStorage& storage() const { return m_grid; }
 	/** @} */
 
