@@ -144,12 +144,7 @@ void CEvidentialGridMap2D::fuseKeepingConflict(CScanImpacts& impacts)
 			});
 	};
 	m_workspace->fuseInBands(
-		g, insertionOptions.insertionThreads, [&](const TWorkspace::TFusionBand& band) {
-			if (m_grid.decayRate() > 0.0)
-				fuseBand(std::true_type(), band);
-			else
-				fuseBand(std::false_type(), band);
-		});
+		g, insertionOptions.insertionThreads, m_grid.decayRate() > 0.0, fuseBand);
 	// The impact cells the visit did not reach: a cloud's farther impacts.
 	impacts.forEachUnvisited([&](std::size_t idx, double occupied) {
 		m_grid.markImpact(idx);

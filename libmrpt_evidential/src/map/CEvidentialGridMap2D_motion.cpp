@@ -100,12 +100,7 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 			});
 	};
 	const std::size_t used =
-		m_workspace->fuseInBands(g, io.insertionThreads, [&](TWorkspace::TFusionBand& band) {
-			if (m_grid.decayRate() > 0.0)
-				fuseBand(std::true_type(), band);
-			else
-				fuseBand(std::false_type(), band);
-		});
+		m_workspace->fuseInBands(g, io.insertionThreads, m_grid.decayRate() > 0.0, fuseBand);
 	for (std::size_t b = 0; b < used; ++b) motion.adoptCandidates(m_workspace->bands[b].motion);
 
 	impacts.forEachUnvisited([&](std::size_t idx, double occupied) {

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <type_traits>
 #include <vector>
 #include <mutex>
 
@@ -49,10 +50,13 @@ struct CEvidentialGridMap2D::TWorkspace
 	 * that. */
 	static constexpr double kCellsPerBand = 40000;
 	/** Visits the rows the transform informs in up to `threads` bands at
-	 * once (fewer for a small scan): fuseBand(band) on each, the bands in row
-	 * order in `bands`; returns the number of bands used. */
+	 * once (fewer for a small scan): fuseBand(decays, band) on each, with
+	 * `decays` std::true_type or std::false_type as the grid decays or not
+	 * (the kernels are compiled for each), the bands in row order in
+	 * `bands`; returns the number of bands used. */
 	template <typename FuseBand>
-	std::size_t fuseInBands(const GridGeometry& grid, unsigned threads, FuseBand&& fuseBand)
+	std::size_t fuseInBands(
+		const GridGeometry& grid, unsigned threads, bool decays, FuseBand&& fuseBand)
 	{
 		const CPolarToCartesian::TRows rows = transform.prepareRows(grid);
 		const int count = rows.last - rows.first + 1;
@@ -60,7 +64,8 @@ struct CEvidentialGridMap2D::TWorkspace
 		const Box& box = transform.box();
 		const double cells = static_cast<double>(count) *
 			std::max(1.0, (box.xMax - box.xMin) / grid.resolution);
-		const auto worth = static_cast<int>(std::clamp(cells / kCellsPerBand, 1.0, 64.0));
+		const auto worth = static_cast<int>(std::clamp(
+			cells / kCellsPerBand, 1.0, static_cast<double>(TInsertionOptions::kMaxInsertionThreads)));
 		const auto n = static_cast<std::size_t>(
 			std::min({static_cast<int>(threads), count, worth}));
 		if (bands.size() < n) bands.resize(n);
@@ -70,7 +75,12 @@ struct CEvidentialGridMap2D::TWorkspace
 			bands[b].lastRow =
 				rows.first + static_cast<int>(b + 1) * count / static_cast<int>(n) - 1;
 		}
-		bandWorkers.run(n, [&](std::size_t b) { fuseBand(bands[b]); });
+		bandWorkers.run(n, [&](std::size_t b) {
+			if (decays)
+				fuseBand(std::true_type(), bands[b]);
+			else
+				fuseBand(std::false_type(), bands[b]);
+		});
 		return n;
 	}
 };

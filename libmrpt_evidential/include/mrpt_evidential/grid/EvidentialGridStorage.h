@@ -244,15 +244,15 @@ class EvidentialGridStorage
 		const QuantizedCell& c = m_cells[idx];
 		return c.occupied >= occupiedBelow || (c.aside & kEventJudgedWhenSeenFree) != 0;
 	}
-	/** fuseSimpleFree<Decays, false>() (a grid without conflict) into every
-	 * quiet cell of [first, first + count) (see isLoud()); loud cells are
-	 * left unfused, their indices appended to `loud` in order. Four cells at
-	 * a time where the target has SSE2, with the same results. */
 	/** fuseSimpleFree<Decays, true>() (a grid that keeps conflict) into
 	 * every cell of [first, first + count), four at a time where the target
 	 * has SSE2, with the same results. */
 	template <bool Decays>
 	void fuseFreeRunKeepingConflict(std::size_t first, std::size_t count, float w);
+	/** fuseSimpleFree<Decays, false>() (a grid without conflict) into every
+	 * quiet cell of [first, first + count) (see isLoud()); loud cells are
+	 * left unfused, their indices appended to `loud` in order. Four cells at
+	 * a time where the target has SSE2, with the same results. */
 	template <bool Decays>
 	void fuseQuietFreeRun(
 		std::size_t first, std::size_t count, float w, std::uint16_t occupiedBelow,
