@@ -209,26 +209,6 @@ TEST(Motion, PoseNoiseDoesNotFlagWalls)
 	EXPECT_EQ(map.getCellDecision(-1.0, -0.21), Decision::Occupied);
 }
 
-TEST(Motion, BoxPutAgainstAWallIsAnArrival)
-{
-	// A box put against the north wall: beside static structure its cells
-	// are only pending at the first hit, and the next scans confirm them.
-	CEvidentialGridMap2D map = roomMap();
-	const test::TBox box{-0.3, 2.6, 0.3, 3.0};
-	for (int k = 0; k < 65; ++k)
-	{
-		std::vector<test::TBox> world = test::roomWalls();
-		if (k >= 60) world.push_back(box);
-		const CPose3D pose = swayingPose(k);
-		map.insertObservation(test::scanOfBoxes(world, pose, kSetup.at(0.1 * k)), pose);
-	}
-	std::size_t atBox = 0, elsewhere = 0;
-	for (const auto& [x, y] : map.getAppearedCellCenters())
-		++(near(box, x, y, 0.1) ? atBox : elsewhere);
-	EXPECT_GE(atBox, 6u) << "the box's face";
-	EXPECT_EQ(elsewhere, 0u);
-}
-
 TEST(Motion, MapThatKeepsConflictHasNoMotionLayer)
 {
 	CEvidentialGridMap2D map = roomMap();
