@@ -39,9 +39,11 @@ const test::ScanSetup kSetup = test::ScanSetup().maxRange(10.0);
 constexpr std::size_t kRays = 181;
 
 /** A map with free, occupied and unknown cells, and cells where something
- * appeared and where something left: on the left half of the scans a wall
- * seen at 3 m comes forward to 2 m (the cells at 2 m were free), on the right
- * half a wall at 2 m goes back to 3 m (the cells at 2 m were occupied). */
+ * appeared and where something left: a board seen at 2 m in front of a wall
+ * at 3 m moves sideways by an eighth of the field of view (the cells it
+ * comes to were free, those it leaves occupied). A thing that moves fills a
+ * small share of a scan; a scan half of whose world moved at once would be
+ * taken for one whose pose is off. */
 CEvidentialGridMap2D movingWallMap()
 {
 	CEvidentialGridMap2D map(-4.0, 4.0, -4.0, 4.0, 0.1);
@@ -53,7 +55,10 @@ CEvidentialGridMap2D movingWallMap()
 			map.insertObservation(
 				test::scanByIndex(
 					kRays, kSetup.at(1.0 + 3 * phase + i),
-					[phase](std::size_t ray) { return (ray < kRays / 2) == (phase == 0) ? 3.0 : 2.0; }),
+					[phase](std::size_t ray) {
+						const std::size_t eighth = ray / (kRays / 8);
+						return eighth == static_cast<std::size_t>(2 + phase) ? 2.0 : 3.0;
+					}),
 				origin);
 	return map;
 }

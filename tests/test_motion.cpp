@@ -1,7 +1,7 @@
 /* The motion layer (issue 11): the conflict of each fusion split by its
  * cause, a box that moves in a simulated room flagged where it left and where
- * it came, the walls left alone under pose noise, the window, and what
- * survives a copy and a file. */
+ * it came, the walls left alone under pose noise and by scans whose pose is
+ * off, the window, and what survives a copy and a file. */
 #include <gtest/gtest.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
@@ -207,6 +207,38 @@ TEST(Motion, PoseNoiseDoesNotFlagWalls)
 	// The walls read occupied nonetheless.
 	EXPECT_EQ(map.getCellDecision(0.0, 3.02), Decision::Occupied);
 	EXPECT_EQ(map.getCellDecision(-1.0, -0.21), Decision::Occupied);
+}
+
+TEST(Motion, ScansWhosePoseIsOffFlagNothing)
+{
+	// The static room mapped with good poses, then scanned from poses off by
+	// more than motionClearance (a SLAM front end's jump, which it mends
+	// four scans later): the scans disagree with the whole map, not with a
+	// part of it.
+	CEvidentialGridMap2D map = roomMap();
+	std::vector<test::TBox> room = test::roomWalls();
+	room.push_back(kBoxBefore);
+	for (int k = 0; k < 60; ++k)
+		map.insertObservation(test::scanOfBoxes(room, swayingPose(k), kSetup.at(0.1 * k)), swayingPose(k));
+	std::size_t flagged = 0;
+	for (int k = 60; k < 64; ++k)
+	{
+		const CPose3D truth = swayingPose(k);
+		const CPose3D believed(truth.x() + 0.25, truth.y() - 0.15, 0.0, truth.yaw() + 0.06, 0, 0);
+		map.insertObservation(test::scanOfBoxes(room, truth, kSetup.at(0.1 * k)), believed);
+		const auto counts = map.countMotion();
+		flagged += counts.appeared + counts.disappeared;
+	}
+	EXPECT_EQ(flagged, 0u);
+	// Back on good poses, the box that moves is found as before, and the
+	// misplaced scans' evidence flags nothing elsewhere.
+	replayMovingBox(map, 64, 74);
+	const TFlags appeared = flags(map, Motion::Appeared);
+	const TFlags disappeared = flags(map, Motion::Disappeared);
+	EXPECT_GE(appeared.atAfter, 6);
+	EXPECT_EQ(appeared.elsewhere, 0);
+	EXPECT_GE(disappeared.atBefore, 4);
+	EXPECT_EQ(disappeared.elsewhere, 0);
 }
 
 TEST(Motion, MapThatKeepsConflictHasNoMotionLayer)

@@ -1,10 +1,13 @@
 /* The motion layer's decisions on hand-made fusions (src/insert/): arrivals
  * beside static structure wait for a hit at the next insertions, and a cell
- * that flips between hit and free does not become an arrival. */
+ * that flips between hit and free does not become an arrival, and a scan
+ * whose impacts mostly land on free cells (a misplaced one) settles nothing. */
 #include <gtest/gtest.h>
 #include "insert/MotionDetector.h"
 
+#include <algorithm>
 #include <functional>
+#include <vector>
 
 using namespace mrpt_evidential;
 
@@ -34,7 +37,7 @@ class DetectorOnAGrid : public ::testing::Test
 		grid.beginInsertion(t);
 		detector.begin(rules);
 		fusions();
-		detector.settle(grid);
+		detector.settle(grid, impactCells);
 	}
 	void fuse(std::size_t idx, const Mass& observed, bool impact)
 	{
@@ -52,6 +55,8 @@ class DetectorOnAGrid : public ::testing::Test
 	CMotionDetector detector;
 	const TMotionRules rules{0.5, 2, 2.0};
 	std::size_t wall = 0, floor = 0;
+	/** Cells the beams of each insertion ended in, for settle(). */
+	std::size_t impactCells = 100;
 };
 }  // namespace
 
@@ -91,4 +96,46 @@ TEST_F(DetectorOnAGrid, CellThatFlipsBetweenHitAndFreeIsNoArrival)
 	insertion(7.0, [&] { weakHit(); });
 	insertion(7.1, [&] { weakHit(); });
 	EXPECT_EQ(grid.event(floor), CellEvent::Appeared);
+}
+
+TEST_F(DetectorOnAGrid, ScanWhoseImpactsMostlyLandOnFreeCellsSettlesNothing)
+{
+	// A strip of floor far from the wall, seen free.
+	std::vector<std::size_t> strip;
+	for (int cx = 0; cx < 20; ++cx) strip.push_back(grid.geometry().index(cx, 3));
+	for (int k = 0; k < 3; ++k)
+		insertion(0.6 + 0.1 * k, [&] {
+			for (const std::size_t idx : strip) fuse(idx, Mass::simpleFree(0.7), false);
+		});
+	const auto hitStrip = [&](std::size_t hits) {
+		for (std::size_t k = 0; k < hits; ++k) fuse(strip[k], Mass::simpleOccupied(0.9), true);
+	};
+	const auto arrivals = [&] {
+		return std::count_if(strip.begin(), strip.end(), [&](std::size_t idx) {
+			return grid.event(idx) == CellEvent::Appeared;
+		});
+	};
+	// Ten of a scan's twenty impact cells on free floor: the scan's pose is
+	// off, not the world.
+	impactCells = 20;
+	insertion(1.0, [&] { hitStrip(10); });
+	EXPECT_EQ(arrivals(), 0);
+	EXPECT_EQ(grid.event(strip[0]), CellEvent::None);
+	// The same hits in a scan of a hundred impact cells: something arrived.
+	for (int k = 0; k < 3; ++k)
+		insertion(1.1 + 0.1 * k, [&] {
+			for (const std::size_t idx : strip) fuse(idx, Mass::simpleFree(0.9), false);
+		});
+	impactCells = 100;
+	insertion(1.5, [&] { hitStrip(10); });
+	EXPECT_EQ(arrivals(), 10);
+	// Too few arrivals to tell (a person in a scan that sees little else).
+	for (int k = 0; k < 3; ++k)
+		insertion(1.6 + 0.1 * k, [&] {
+			for (const std::size_t idx : strip) fuse(idx, Mass::simpleFree(0.9), false);
+		});
+	ASSERT_EQ(arrivals(), 0);
+	impactCells = 6;
+	insertion(2.0, [&] { hitStrip(CMotionDetector::kMisplacedArrivals - 1); });
+	EXPECT_EQ(arrivals(), static_cast<long>(CMotionDetector::kMisplacedArrivals - 1));
 }

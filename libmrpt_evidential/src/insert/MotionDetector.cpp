@@ -95,8 +95,17 @@ void CMotionDetector::settleArrival(
 		grid.setEvent(idx, CellEvent::Leaving);
 }
 
-void CMotionDetector::settle(EvidentialGridStorage& grid)
+void CMotionDetector::settle(EvidentialGridStorage& grid, std::size_t impactCells)
 {
+	const auto arrivals = static_cast<std::size_t>(std::count_if(
+		m_candidates.begin(), m_candidates.end(),
+		[](const TCandidate& c) { return c.event == CellEvent::Appeared; }));
+	if (arrivals >= kMisplacedArrivals &&
+		static_cast<double>(arrivals) >= kMisplacedShare * static_cast<double>(impactCells))
+	{
+		m_candidates.clear();
+		return;
+	}
 	for (const TCandidate& c : m_candidates)
 	{
 		const CellEvent before = grid.event(c.index);

@@ -42,7 +42,14 @@ struct TMotionRules
  *   seen free, away from static structure. Beside structure, a ray may graze
  *   a wall: while its evidence still leans occupied the cell is only Leaving
  *   (not reported), and a disappearance found later is dated from the first
- *   free sight. */
+ *   free sight.
+ * - A misplaced scan: when a large share of the cells a scan's beams ended
+ *   in were seen free before (kMisplacedShare of them, and at least
+ *   kMisplacedArrivals), the scan disagrees with the map as a whole. That
+ *   is its pose's error, larger than motionClearance (odometry that
+ *   drifted, a SLAM front end's jump), not the world: the scan's evidence
+ *   is fused, but it settles no event. A thing that moves fills a small
+ *   share of a scan's impact cells. */
 class CMotionDetector
 {
    public:
@@ -99,8 +106,13 @@ class CMotionDetector
 		m_candidates.insert(m_candidates.end(), band.m_candidates.begin(), band.m_candidates.end());
 		band.m_candidates.clear();
 	}
-	/** Settles the candidates of the scan. */
-	void settle(EvidentialGridStorage& grid);
+	/** Settles the candidates of the scan, whose beams ended in
+	 * `impactCells` cells: none when the scan is a misplaced one (see the
+	 * class). */
+	void settle(EvidentialGridStorage& grid, std::size_t impactCells);
+	/** The rule of a misplaced scan (see the class). */
+	static constexpr double kMisplacedShare = 0.2;
+	static constexpr std::size_t kMisplacedArrivals = 8;
 
    private:
 	/** A cell with an event that the scan saw without much conflict: an
