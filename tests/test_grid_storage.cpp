@@ -232,6 +232,27 @@ TEST(GridStorage, GrowthRoomStaysWithinTheBudget)
 	EXPECT_FALSE(s.growToInclude(0.0, 1.6, 0.0, 1.0, 0.0, 150));
 }
 
+TEST(GridStorage, LayoutChangesWhenTheCellsMove)
+{
+	EvidentialGridStorage s;
+	s.reset(0.0, 1.0, 0.0, 1.0, 0.1, 10000);
+	const std::size_t first = s.layout();
+	ASSERT_TRUE(s.growToInclude(0.0, 1.4, 0.0, 1.0, 0.0, 10000));
+	const std::size_t grown = s.layout();
+	EXPECT_NE(grown, first) << "outgrown: a new block";
+	ASSERT_TRUE(s.growToInclude(0.0, 1.6, 0.0, 1.0, 0.0, 10000));
+	EXPECT_EQ(s.layout(), grown) << "into the room kept";
+	const EvidentialGridStorage copy = s;
+	EXPECT_EQ(copy.layout(), grown) << "the same cells at the same indices";
+	s.reset(0.0, 1.0, 0.0, 1.0, 0.1, 10000);
+	EXPECT_NE(s.layout(), grown);
+	EXPECT_NE(s.layout(), first) << "no grid had it before";
+	const std::size_t afterReset = s.layout();
+	s.assign(copy.geometry(), copy.packedCells(), copy.stampTimes(), 0, 0.0, true);
+	EXPECT_NE(s.layout(), afterReset);
+	EXPECT_NE(s.layout(), grown);
+}
+
 TEST(GridStorage, DecayFollowsTheExponentialLaw)
 {
 	EvidentialGridStorage s;

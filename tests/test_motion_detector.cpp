@@ -1,7 +1,8 @@
 /* The motion layer's decisions on hand-made fusions (src/insert/): arrivals
  * beside static structure wait for a hit at the next insertions, and a cell
- * that flips between hit and free does not become an arrival, and a scan
- * whose impacts mostly land on free cells (a misplaced one) settles nothing. */
+ * that flips between hit and free does not become an arrival, a scan whose
+ * impacts mostly land on free cells (a misplaced one) settles nothing, and
+ * the list of recent arrivals outlives growth that moves no cell. */
 #include <gtest/gtest.h>
 #include "insert/MotionDetector.h"
 
@@ -31,11 +32,14 @@ class DetectorOnAGrid : public ::testing::Test
 				fuse(floor, Mass::simpleFree(0.7), false);
 			});
 	}
-	/** One insertion at data time t, whose fusions `fusions` makes. */
+	/** One insertion at data time t, whose fusions `fusions` makes, as the
+	 * map makes it: the recent arrivals that its beams cross in their free
+	 * margins (crossedInMargin) judged first. */
 	void insertion(double t, const std::function<void()>& fusions)
 	{
 		grid.beginInsertion(t);
 		detector.begin(rules);
+		detector.judgeArrivalsInMargins(grid, crossedInMargin);
 		fusions();
 		detector.settle(grid, impactCells);
 	}
@@ -57,6 +61,7 @@ class DetectorOnAGrid : public ::testing::Test
 	std::size_t wall = 0, floor = 0;
 	/** Cells the beams of each insertion ended in, for settle(). */
 	std::size_t impactCells = 100;
+	std::function<bool(std::size_t)> crossedInMargin = [](std::size_t) { return false; };
 };
 }  // namespace
 
@@ -135,7 +140,29 @@ TEST_F(DetectorOnAGrid, ScanWhoseImpactsMostlyLandOnFreeCellsSettlesNothing)
 			for (const std::size_t idx : strip) fuse(idx, Mass::simpleFree(0.9), false);
 		});
 	ASSERT_EQ(arrivals(), 0);
-	impactCells = 6;
-	insertion(2.0, [&] { hitStrip(CMotionDetector::kMisplacedArrivals - 1); });
+	impactCells = CMotionDetector::kMisplacedArrivals - 1;
+	insertion(2.0, [&] { hitStrip(impactCells); });
 	EXPECT_EQ(arrivals(), static_cast<long>(CMotionDetector::kMisplacedArrivals - 1));
+}
+
+TEST_F(DetectorOnAGrid, ArrivalsStayListedWhileTheGridGrowsIntoItsRoom)
+{
+	// Outgrowing its block moves the cells; the room the grid then keeps
+	// beyond the side that grew takes later growth without moving any.
+	ASSERT_TRUE(grid.growToInclude(0.0, 1.2, 0.0, 1.0, 0.0, 100000));
+	const std::size_t layout = grid.layout();
+	const std::size_t cell = grid.geometry().index(3, 3);  // away from the wall
+	for (int k = 0; k < 3; ++k)
+		insertion(0.6 + 0.1 * k, [&] { fuse(cell, Mass::simpleFree(0.9), false); });
+	insertion(1.0, [&] { fuse(cell, Mass::simpleOccupied(0.9), true); });
+	ASSERT_EQ(grid.event(cell), CellEvent::Appeared);
+
+	ASSERT_TRUE(grid.growToInclude(0.0, 1.3, 0.0, 1.0, 0.0, 100000));
+	ASSERT_EQ(grid.layout(), layout) << "grown into its room";
+	ASSERT_EQ(grid.geometry().index(3, 3), cell);
+	// A beam crosses the arrival within its free margin (no free evidence
+	// for the cell): it left all the same.
+	crossedInMargin = [&](std::size_t idx) { return idx == cell; };
+	insertion(1.1, [] {});
+	EXPECT_EQ(grid.event(cell), CellEvent::Disappeared);
 }

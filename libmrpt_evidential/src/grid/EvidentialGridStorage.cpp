@@ -3,6 +3,7 @@
 #include <mrpt_evidential/grid/EvidentialGridStorage.h>
 
 #include <algorithm>
+#include <atomic>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -27,6 +28,13 @@ constexpr std::size_t kMaxKeptEventTimes = EvidentialGridStorage::kMaxStamps / 2
  * a share of its extent along that axis. */
 constexpr double kGrowthRoom = 0.5;
 
+/** A layout number no grid has had. */
+std::size_t newLayout()
+{
+	static std::atomic<std::size_t> next{1};
+	return next++;
+}
+
 std::uint16_t ceilingFor(bool keepsConflict)
 {
 	return keepsConflict
@@ -46,6 +54,7 @@ void EvidentialGridStorage::reset(
 	const double sy = GridGeometry::cellsToCover(yMax - yMin, resolution);
 	m_geometry = {xMin, yMin, resolution, static_cast<int>(sx), static_cast<int>(sy)};
 	m_cells.assign(m_geometry.cellCount(), QuantizedCell{});
+	m_layout = newLayout();
 	m_stampTimes.assign(1, 0.0);
 	m_stampGain.assign(1, 1.0);
 	m_presentGain = 1.0;
@@ -125,6 +134,7 @@ bool EvidentialGridStorage::growToInclude(
 			cells.begin() + static_cast<std::ptrdiff_t>(grown.index(dx, cy + dy)));
 	m_cells.swap(cells);
 	m_geometry = grown;
+	m_layout = newLayout();
 	return true;
 }
 
@@ -341,6 +351,7 @@ void EvidentialGridStorage::assign(
 			throw std::invalid_argument("a cell holds an invalid mass, stamp or event");
 	m_geometry = geometry.packed();
 	m_cells = std::move(cells);
+	m_layout = newLayout();
 	m_stampTimes = std::move(stampTimes);
 	m_insertions = insertions;
 	m_decayRate = decayRate;

@@ -82,13 +82,12 @@ class CMotionDetector
 	template <typename CrossedInMargin>
 	void judgeArrivalsInMargins(const EvidentialGridStorage& grid, CrossedInMargin&& crossed)
 	{
-		// A grid that grew or was reset has its cells elsewhere: the list
-		// starts again (its arrivals then last their window at most).
-		const GridGeometry& g = grid.geometry();
-		if (!(g.xMin == m_listedGeometry.xMin && g.yMin == m_listedGeometry.yMin &&
-			  g.sizeX == m_listedGeometry.sizeX && g.sizeY == m_listedGeometry.sizeY))
-			m_arrivals.clear();
-		m_listedGeometry = g;
+		// A grid whose cells moved (reset, read from a file, grown into a new
+		// block) has them at other indices: the list starts again (its
+		// arrivals then last their window at most). Growth into the room
+		// the grid kept moves no cell.
+		if (grid.layout() != m_listedLayout) m_arrivals.clear();
+		m_listedLayout = grid.layout();
 		std::size_t kept = 0;
 		for (const std::size_t idx : m_arrivals)
 		{
@@ -142,9 +141,9 @@ class CMotionDetector
 	TMotionRules m_rules;
 	std::vector<TCandidate> m_candidates;
 	/** Cells set Appeared, to find them in the free margins of later scans,
-	 * in the grid of `m_listedGeometry`. */
+	 * at their indices in the grid of layout `m_listedLayout`. */
 	std::vector<std::size_t> m_arrivals;
-	GridGeometry m_listedGeometry;
+	std::size_t m_listedLayout = 0;
 };
 
 }  // namespace mrpt_evidential

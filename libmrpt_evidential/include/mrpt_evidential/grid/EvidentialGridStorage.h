@@ -74,6 +74,13 @@ class EvidentialGridStorage
 		double xMin, double xMax, double yMin, double yMax, double margin,
 		std::size_t maxCells);
 
+	/** A number that changes whenever the cells move to other indices
+	 * (reset(), assign(), a growth into a new block) and no other grid had
+	 * before (a copy has the same cells at the same indices, and the same
+	 * number): while it stays, an index kept from an earlier insertion names
+	 * the same cell, growth into the kept room included. */
+	std::size_t layout() const { return m_layout; }
+
 	/** Decay rate, per second of data time, >= 0 (0: no decay).
 	 * \throws std::invalid_argument if negative or not finite. */
 	void setDecayRate(double perSecond);
@@ -383,6 +390,8 @@ class EvidentialGridStorage
 
 	GridGeometry m_geometry;
 	std::vector<QuantizedCell> m_cells;
+	/** See layout(); 0 for the empty grid of the default constructor. */
+	std::size_t m_layout = 0;
 	double m_decayRate = 0.0;
 	bool m_keepsConflict = true;
 	/** Every cell vacuous since reset(), no insertion begun and nothing
