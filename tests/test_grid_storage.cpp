@@ -232,6 +232,22 @@ TEST(GridStorage, GrowthRoomStaysWithinTheBudget)
 	EXPECT_FALSE(s.growToInclude(0.0, 1.6, 0.0, 1.0, 0.0, 150));
 }
 
+TEST(GridStorage, PackedNumbersNameTheCellsOfAGrownGrid)
+{
+	EvidentialGridStorage s;
+	s.reset(0.0, 1.0, 0.0, 1.0, 0.1, 10000);
+	ASSERT_TRUE(s.growToInclude(-0.3, 1.4, -0.2, 1.0, 0.0, 10000));
+	s.beginInsertion(1.0);
+	const GridGeometry& g = s.geometry();
+	for (int cy = 0; cy < g.sizeY; ++cy)
+		for (int cx = 0; cx < g.sizeX; ++cx)
+			s.write(g.index(cx, cy), Mass::simpleFree(0.001 * (cx + 20 * cy)));
+	ASSERT_NE(g.stride(), static_cast<std::size_t>(g.sizeX)) << "room between rows";
+	const std::vector<QuantizedCell> packed = s.packedCells();
+	for (std::size_t i = 0; i < packed.size(); ++i)
+		ASSERT_TRUE(s.cells()[g.indexOfPacked(i)] == packed[i]) << i;
+}
+
 TEST(GridStorage, LayoutChangesWhenTheCellsMove)
 {
 	EvidentialGridStorage s;

@@ -34,7 +34,6 @@ using mrpt_evidential::test::deserialize;
 using mrpt_evidential::test::largestAllocation;
 using mrpt_evidential::test::resetLargestAllocation;
 using mrpt_evidential::test::serialize;
-using mrpt_evidential::test::storedIndex;
 using mrpt_evidential::test::wall;
 using mrpt::poses::CPose3D;
 using mrpt::serialization::archiveFrom;
@@ -429,7 +428,7 @@ TEST(MapIO, VersionOneFilesStillLoad)
 	ASSERT_EQ(back.geometry().cellCount(), cells);
 	for (std::size_t i = 0; i < cells; ++i)
 	{
-		ASSERT_EQ(back.storage().read(i), original.storage().read(storedIndex(original, i))) << i;
+		ASSERT_EQ(back.storage().read(i), original.storage().read(original.geometry().indexOfPacked(i))) << i;
 		const Mass m = back.storage().read(i);
 		ASSERT_EQ(back.storage().heldImpact(i), m.occupied > m.free) << i;
 	}
@@ -445,7 +444,7 @@ TEST(MapIO, VersionOneFilesStillLoad)
 	{
 		const Mass m = motion.storage().read(i);
 		ASSERT_EQ(m.conflict, 0.0);
-		ASSERT_MASS_NEAR_AT(m, normalized(original.storage().read(storedIndex(original, i))), 2e-4, i, 0);
+		ASSERT_MASS_NEAR_AT(m, normalized(original.storage().read(original.geometry().indexOfPacked(i))), 2e-4, i, 0);
 		ASSERT_EQ(motion.storage().event(i), CellEvent::None);
 	}
 }
@@ -482,7 +481,7 @@ TEST(MapIO, VersionZeroFilesStillLoad)
 	ASSERT_EQ(back.geometry().cellCount(), cells);
 	for (std::size_t i = 0; i < cells; ++i)
 		ASSERT_MASS_NEAR_AT(
-			back.storage().read(i), original.storage().read(storedIndex(original, i)), 2.0 / kMassScale, i,
+			back.storage().read(i), original.storage().read(original.geometry().indexOfPacked(i)), 2.0 / kMassScale, i,
 			0);
 
 	// A version-0 cell whose masses pass 1 together is refused, as before.

@@ -133,6 +133,39 @@ TEST(MapMerge, ChangesBetweenRunsAreFoundAndNotOnTheWall)
 	EXPECT_EQ(img.getWidth(), static_cast<std::size_t>(after.getSizeX()));
 }
 
+TEST(MapMerge, ChangesPictureMarksEachChangedCellOfAGrownMap)
+{
+	// The second run goes on east: its grid grows and keeps room beyond that
+	// side, so its cells' indices leave room between rows, while the changes
+	// number the cells cx + sizeX cy.
+	const CEvidentialGridMap2D before = run(0.0);
+	CEvidentialGridMap2D after = run(1.5, 0.05, 50.0);
+	after.insertObservation(
+		test::arcScan(181, 3.0, test::ScanSetup().at(52.0)), CPose3D(3.5, 0, 0, 0, 0, 0));
+	ASSERT_GT(after.storage().cells().size(), after.geometry().cellCount()) << "room kept";
+	const auto changes = after.changesSince(before);
+	ASSERT_GT(changes.appeared.size(), 3u);
+	// Magenta reads the same in RGB and BGR, and no grey level is magenta.
+	after.renderingOptions.appearedColor = mrpt::img::TColor(255, 0, 255);
+	mrpt::img::CImage img;
+	after.getAsChangesImage(changes, img);
+	const auto magenta = [&](int x, int y) {
+		return img.at<std::uint8_t>(x, y, 0) == 255 && img.at<std::uint8_t>(x, y, 1) == 0 &&
+			img.at<std::uint8_t>(x, y, 2) == 255;
+	};
+	const int sizeX = after.geometry().sizeX, sizeY = after.geometry().sizeY;
+	for (const std::size_t i : changes.appeared)
+	{
+		const int cx = static_cast<int>(i % static_cast<std::size_t>(sizeX));
+		const int cy = static_cast<int>(i / static_cast<std::size_t>(sizeX));
+		EXPECT_TRUE(magenta(cx, sizeY - 1 - cy)) << cx << " " << cy;
+	}
+	std::size_t painted = 0;
+	for (int y = 0; y < sizeY; ++y)
+		for (int x = 0; x < sizeX; ++x) painted += magenta(x, y);
+	EXPECT_EQ(painted, changes.appeared.size());
+}
+
 TEST(MapMerge, CellsOneRunNeverSawAreNotCompared)
 {
 	// A run behind the other: its map sees nothing beyond its own wall.

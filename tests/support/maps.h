@@ -28,15 +28,6 @@ inline std::string mapDefect(const CEvidentialGridMap2D& map)
 	return out.str();
 }
 
-/** The storage index of a map's cell i, counted cx + sizeX cy (as files
- * hold them). */
-inline std::size_t storedIndex(const CEvidentialGridMap2D& map, std::size_t i)
-{
-	const GridGeometry& g = map.geometry();
-	const auto sx = static_cast<std::size_t>(g.sizeX);
-	return g.index(static_cast<int>(i % sx), static_cast<int>(i / sx));
-}
-
 /** How many cells hold anything but the vacuous mass. */
 inline std::size_t informedCells(const CEvidentialGridMap2D& map)
 {

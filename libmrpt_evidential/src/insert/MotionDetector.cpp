@@ -8,8 +8,6 @@ namespace mrpt_evidential
 {
 namespace
 {
-bool leansOccupied(const Mass& m) { return m.occupied > m.free && m.occupied >= 0.5; }
-
 /** Time of the insertion `k` insertions before the latest (the oldest one
  * kept, if there are not that many). */
 double insertionTimeBefore(const EvidentialGridStorage& grid, std::size_t k)

@@ -11,6 +11,10 @@
 
 namespace mrpt_evidential
 {
+/** The motion layer's test of a mass for static structure: it leans
+ * occupied (m(O) > m(F) and m(O) >= 0.5). */
+inline bool leansOccupied(const Mass& m) { return m.occupied > m.free && m.occupied >= 0.5; }
+
 /** What decides an event, from the map's insertion options. */
 struct TMotionRules
 {

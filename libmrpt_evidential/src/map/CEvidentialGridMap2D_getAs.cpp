@@ -256,15 +256,14 @@ void CEvidentialGridMap2D::getAsChangesImage(
 	// The changes are numbered cx + sizeX cy; the grid's own indices may
 	// leave room between rows.
 	const GridGeometry& g = geometry();
-	std::vector<Motion> motion(g.cellCount(), Motion::None);
-	for (const std::size_t i : changes.appeared)
-		if (i < motion.size()) motion[i] = Motion::Appeared;
-	for (const std::size_t i : changes.disappeared)
-		if (i < motion.size()) motion[i] = Motion::Disappeared;
-	const GridGeometry packed = g.packed();
-	paintMotion(img, [&](std::size_t idx) {
-		return motion[packed.index(g.columnOf(idx), g.rowOf(idx))];
-	});
+	std::vector<Motion> motion(m_grid.cells().size(), Motion::None);
+	const auto mark = [&](const std::vector<std::size_t>& cells, Motion m) {
+		for (const std::size_t i : cells)
+			if (i < g.cellCount()) motion[g.indexOfPacked(i)] = m;
+	};
+	mark(changes.appeared, Motion::Appeared);
+	mark(changes.disappeared, Motion::Disappeared);
+	paintMotion(img, [&](std::size_t idx) { return motion[idx]; });
 	if (withLegend)
 		img = detail::withLegend(
 			img, geometry().resolution, legendOf(kMotionPicture, renderingOptions));

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "insert/MotionDetector.h"
 #include "map/MapWorkspace.h"
 #include <mrpt_evidential/support/NumberText.h>
 
@@ -37,7 +38,6 @@ std::pair<int, int> latticeOffset(const GridGeometry& mine, const GridGeometry& 
 }
 
 bool seen(const Mass& m) { return m.unknown < 1.0 - 1e-4; }
-bool leansOccupied(const Mass& m) { return m.occupied > m.free && m.occupied >= 0.5; }
 }  // namespace
 
 std::optional<std::size_t> CEvidentialGridMap2D::cellOfOther(

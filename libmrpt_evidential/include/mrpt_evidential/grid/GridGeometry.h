@@ -97,6 +97,13 @@ struct GridGeometry
 		return firstIndex + static_cast<std::size_t>(cy) * stride() +
 			static_cast<std::size_t>(cx);
 	}
+	/** Index of the cell numbered `packedIndex` = cx + sizeX cy (< cellCount()),
+	 * as files and TMapChanges number the cells. */
+	std::size_t indexOfPacked(std::size_t packedIndex) const
+	{
+		const auto sx = static_cast<std::size_t>(sizeX);
+		return index(static_cast<int>(packedIndex % sx), static_cast<int>(packedIndex / sx));
+	}
 	/** Column and row of the cell at `idx` (an index() of this geometry). */
 	int columnOf(std::size_t idx) const
 	{
