@@ -319,6 +319,8 @@ TEST(GridStorage, StampsRebaseWithoutChangingMasses)
 	s.beginInsertion(0.0);
 	const Mass m = Mass::simpleOccupied(1.0);
 	s.write(0, m);
+	s.markImpact(0);
+	s.markFlipped(0);
 	const std::size_t n = EvidentialGridStorage::kMaxStamps + 5000;
 	for (std::size_t i = 1; i <= n; ++i)
 	{
@@ -331,6 +333,10 @@ TEST(GridStorage, StampsRebaseWithoutChangingMasses)
 	EXPECT_MASS_NEAR(s.read(1), Mass::simpleFree(0.5), 2.0 / kMassScale);
 	EXPECT_EQ(s.insertionCount(), n + 1);
 	EXPECT_LT(s.stampTimes().size(), EvidentialGridStorage::kMaxStamps);
+	// The cell's flags outlive the rebases.
+	EXPECT_TRUE(s.heldImpact(0));
+	EXPECT_TRUE(s.flipped(0));
+	EXPECT_FALSE(s.heldImpact(1) || s.flipped(1));
 }
 
 TEST(GridStorage, AssignRejectsInconsistentState)
@@ -506,11 +512,16 @@ TEST(GridStorageEvents, AssignChecksEventsAndStampBits)
 	c.aside = packEvent(CellEvent::Appeared, 2);  // no such time
 	EXPECT_THROW(s.assign(g, {c}, {0.0, 1.0}, 2, 0.0, false), std::invalid_argument);
 	c.aside = 0;
-	c.stamp = 0x8000;  // the bit that must be 0
-	EXPECT_THROW(s.assign(g, {c}, {0.0, 1.0}, 2, 0.0, false), std::invalid_argument);
 	c.stamp = kHeldImpact | 1;
 	EXPECT_NO_THROW(s.assign(g, {c}, {0.0, 1.0}, 2, 0.0, false));
 	EXPECT_TRUE(s.heldImpact(0));
+	EXPECT_FALSE(s.flipped(0));
+	c.stamp = kFlipped | 1;
+	EXPECT_NO_THROW(s.assign(g, {c}, {0.0, 1.0}, 2, 0.0, false));
+	EXPECT_TRUE(s.flipped(0));
+	EXPECT_FALSE(s.heldImpact(0));
+	c.stamp = kStampFlags | 2;  // no such time, whatever the flags
+	EXPECT_THROW(s.assign(g, {c}, {0.0, 1.0}, 2, 0.0, false), std::invalid_argument);
 	// A cell of a grid without conflict above the ceiling is refused.
 	c.stamp = 0;
 	c.occupied = static_cast<std::uint16_t>(kMassScale);
@@ -540,6 +551,7 @@ EvidentialGridStorage gridWithVariedCells(double decayRate, std::uint32_t seed)
 			const double f = unit(rng), o = unit(rng) * (1.0 - f) * (unit(rng) < 0.3 ? 1.0 : 0.1);
 			g.write(idx, Mass{0.0, f, o, 1.0 - f - o});
 			if (unit(rng) < 0.2) g.markImpact(idx);
+			if (unit(rng) < 0.2) g.markFlipped(idx);
 			const double e = unit(rng);
 			if (e < 0.1) g.setEvent(idx, CellEvent::Appeared);
 			else if (e < 0.2) g.setEvent(idx, CellEvent::Leaving);
@@ -608,6 +620,7 @@ TEST(GridStorage, FreeRunsKeepingConflictFuseAsCellByCell)
 						const double f = (1.0 - k) * unit(rng), o = (1.0 - k - f) * unit(rng);
 						g.write(idx, Mass{k, f, o, 1.0 - k - f - o});
 						if (unit(rng) < 0.2) g.markImpact(idx);
+						if (unit(rng) < 0.2) g.markFlipped(idx);
 					}
 				}
 				g.beginInsertion(56.0);

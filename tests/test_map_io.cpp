@@ -174,11 +174,33 @@ void putLE(std::vector<std::uint8_t>& bytes, std::size_t at, std::uint64_t v, in
 /** groundRemoval, minObstacleHeight, maxObstacleHeight, groundReturns. */
 constexpr std::size_t kCloudOptionBytes = 1 + 8 + 8 + 1;
 
+/** Index in `bytes` (a serialized map) of the high byte of the stamp of the
+ * cell numbered `packed` (cx + sizeX cy). */
+std::size_t stampHighByte(
+	const std::vector<std::uint8_t>& bytes, const CEvidentialGridMap2D& map, std::size_t packed)
+{
+	const std::size_t firstCell = bytes.size() - 9 - 8 * map.geometry().cellCount();
+	return firstCell + 8 * packed + 7;
+}
+
+/** The map as version 4 wrote it: the same layout, no cell marked as one
+ * that flips. */
+std::vector<std::uint8_t> asVersion4(const CEvidentialGridMap2D& map)
+{
+	std::vector<std::uint8_t> bytes = test::serialize(map);
+	const std::size_t header = 1 + (bytes[0] & 0x7F) + 1;
+	bytes[header - 1] = 4;
+	for (std::size_t i = 0; i < map.geometry().cellCount(); ++i)
+		bytes[stampHighByte(bytes, map, i)] &= 0x7F;
+	reseal(bytes);
+	return bytes;
+}
+
 /** The map as version 3 wrote it: no rendering options after the
  * likelihood options (offsets of the layout in the io source). */
 std::vector<std::uint8_t> asVersion3(const CEvidentialGridMap2D& map)
 {
-	std::vector<std::uint8_t> bytes = test::serialize(map);
+	std::vector<std::uint8_t> bytes = asVersion4(map);
 	const std::size_t header = 1 + (bytes[0] & 0x7F) + 1;
 	bytes[header - 1] = 3;
 	const std::size_t insertionBytes = 1 + 8 + 8 + 8 + 1 + 8 + 8 + 1 + 8 + 1 + 8 + 8 + 1 +
@@ -381,6 +403,39 @@ TEST(MapIO, EveryTruncationIsDetected)
 	EXPECT_EQ(end.report, "");
 }
 
+TEST(MapIO, CellsThatFlipAreKeptInFiles)
+{
+	// The motion layer's mark (bit 15 of a cell's stamp), set here in the
+	// stream as a forger would, reads back and is written again.
+	const CEvidentialGridMap2D original = makeMap();
+	auto bytes = serialize(original);
+	const std::size_t packed = 7 + 3 * static_cast<std::size_t>(original.getSizeX());
+	bytes[stampHighByte(bytes, original, packed)] |= 0x80;
+	reseal(bytes);
+	CEvidentialGridMap2D back;
+	deserialize(bytes, back);
+	const GridGeometry& g = back.geometry();
+	for (std::size_t i = 0; i < g.cellCount(); ++i)
+		EXPECT_EQ(back.storage().flipped(g.indexOfPacked(i)), i == packed) << "cell " << i;
+	EXPECT_EQ(serialize(back), bytes);
+}
+
+TEST(MapIO, VersionFourFilesStillLoad)
+{
+	// Version 4 marked no cell as one that flips; one that does is a
+	// damaged file.
+	const CEvidentialGridMap2D original = makeMap();
+	CEvidentialGridMap2D back;
+	deserialize(asVersion4(original), back);
+	expectSameMap(original, back);
+	auto bytes = asVersion4(original);
+	bytes[stampHighByte(bytes, original, 0)] |= 0x80;
+	reseal(bytes);
+	CEvidentialGridMap2D target;
+	EXPECT_ANY_THROW(deserialize(bytes, target));
+	EXPECT_TRUE(target.isEmpty());
+}
+
 TEST(MapIO, VersionThreeFilesStillLoad)
 {
 	// Version 3 had no rendering options: they read as the defaults.
@@ -511,8 +566,8 @@ TEST(MapIO, UnknownVersionIsRejected)
 	auto bytes = serialize(makeMap(0.3));
 	// MRPT's object header: 0x80 | name length, the class name, the version.
 	const std::size_t versionPos = 1 + (bytes[0] & 0x7F);
-	ASSERT_EQ(bytes[versionPos], 4);
-	for (const std::uint8_t v : {5, 6, 0x7F, 0xFF})
+	ASSERT_EQ(bytes[versionPos], 5);
+	for (const std::uint8_t v : {6, 7, 0x7F, 0xFF})
 	{
 		bytes[versionPos] = v;
 		CEvidentialGridMap2D target;

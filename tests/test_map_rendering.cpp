@@ -50,8 +50,10 @@ CEvidentialGridMap2D movingWallMap()
 	map.insertionOptions.growthMargin = 0.0;
 	map.insertionOptions.motionWindow = 100.0;
 	const mrpt::poses::CPose3D origin;
+	// The board's old place, hit three times, leans free after some six
+	// free sights: then its departure is reported.
 	for (int phase = 0; phase < 2; ++phase)
-		for (int i = 0; i < 3; ++i)
+		for (int i = 0; i < 3 + 5 * phase; ++i)
 			map.insertObservation(
 				test::scanByIndex(
 					kRays, kSetup.at(1.0 + 3 * phase + i),

@@ -1,8 +1,10 @@
 /* The motion layer's decisions on hand-made fusions (src/insert/): arrivals
- * beside static structure wait for a hit at the next insertions, and a cell
- * that flips between hit and free does not become an arrival, a scan whose
- * impacts mostly land on free cells (a misplaced one) settles nothing, and
- * the list of recent arrivals outlives growth that moves no cell. */
+ * beside static structure wait for a hit at the next insertions and stay
+ * when hit again, a cell that flips between hit and free does not become an
+ * arrival (then or later), nor does a hit beside cells never seen free, a departure waits until the cell no longer leans occupied, one
+ * sight is not enough for the default rules, a scan whose impacts mostly
+ * land on free cells (a misplaced one) settles nothing, and the list of
+ * recent arrivals outlives growth that moves no cell. */
 #include <gtest/gtest.h>
 #include "insert/MotionDetector.h"
 
@@ -14,8 +16,9 @@ using namespace mrpt_evidential;
 
 namespace
 {
-/** A 1 x 1 m grid without conflict, 5 cm cells, with a wall cell that beams
- * ended in for a while and a floor cell two cells from it, seen free. */
+/** A 1 x 1 m grid without conflict, 5 cm cells, seen free once, with a wall
+ * cell that beams ended in for a while and a floor cell two cells from it,
+ * seen free. */
 class DetectorOnAGrid : public ::testing::Test
 {
    protected:
@@ -26,6 +29,10 @@ class DetectorOnAGrid : public ::testing::Test
 		floor = grid.geometry().index(10, 10);
 		grid.setKeepsConflict(false);
 		grid.setEventRetention(10.0);
+		insertion(-0.1, [&] {
+			for (std::size_t idx = 0; idx < grid.geometry().cellCount(); ++idx)
+				if (idx != wall) fuse(idx, Mass::simpleFree(0.7), false);
+		});
 		for (int k = 0; k < 5; ++k)
 			insertion(0.1 * k, [&] {
 				fuse(wall, Mass::simpleOccupied(0.9), true);
@@ -74,6 +81,88 @@ TEST_F(DetectorOnAGrid, ArrivalBesideStructureIsConfirmedByTheNextHit)
 	EXPECT_DOUBLE_EQ(grid.eventTime(floor), 1.0) << "dated from the first hit";
 }
 
+TEST_F(DetectorOnAGrid, ArrivalBesideStructureHitAgainStaysAnArrival)
+{
+	insertion(1.0, [&] { weakHit(); });
+	insertion(1.1, [&] { weakHit(); });
+	ASSERT_EQ(grid.event(floor), CellEvent::Appeared);
+	// The third hit still conflicts with the free evidence the cell keeps:
+	// the thing is still there, its arrival stays, with its time.
+	insertion(1.2, [&] { weakHit(); });
+	EXPECT_EQ(grid.event(floor), CellEvent::Appeared);
+	EXPECT_DOUBLE_EQ(grid.eventTime(floor), 1.0);
+}
+
+TEST_F(DetectorOnAGrid, DepartureWaitsUntilTheCellNoLongerLeansOccupied)
+{
+	// A thing that stood for a second, away from the wall, then left.
+	const std::size_t cell = grid.geometry().index(3, 3);
+	for (int k = 0; k < 10; ++k)
+		insertion(1.0 + 0.1 * k, [&] { fuse(cell, Mass::simpleOccupied(0.9), true); });
+	ASSERT_EQ(grid.event(cell), CellEvent::Appeared) << "it came";
+	ASSERT_TRUE(leansOccupied(grid.read(cell)));
+	// Its first free sights leave it leaning occupied: a ray that grazed it
+	// looks the same, so nothing is reported yet.
+	insertion(2.0, [&] { fuse(cell, Mass::simpleFree(0.7), false); });
+	EXPECT_EQ(grid.event(cell), CellEvent::Leaving);
+	int sights = 1;
+	for (; sights < 20 && leansOccupied(grid.read(cell)); ++sights)
+	{
+		EXPECT_EQ(grid.event(cell), CellEvent::Leaving) << sights << " free sights";
+		insertion(2.0 + 0.1 * sights, [&] { fuse(cell, Mass::simpleFree(0.7), false); });
+	}
+	ASSERT_FALSE(leansOccupied(grid.read(cell)));
+	EXPECT_GT(sights, 2);
+	EXPECT_EQ(grid.event(cell), CellEvent::Disappeared);
+	EXPECT_DOUBLE_EQ(grid.eventTime(cell), 2.0) << "dated from the first free sight";
+}
+
+TEST_F(DetectorOnAGrid, DefaultRulesNeedTwoSightsBeforeAChange)
+{
+	// With the default masses (muF 0.7, muO 0.9), one free sight then a hit
+	// conflicts by 0.63: a cell seen once, as the first beams that reach a
+	// corner see it, is no arrival. Seen free twice, it is.
+	const TMotionRules defaults;
+	const std::size_t once = grid.geometry().index(3, 3), twice = grid.geometry().index(3, 17);
+	const auto insertWithDefaults = [&](double t, const std::function<void()>& fusions) {
+		grid.beginInsertion(t);
+		detector.begin(defaults);
+		fusions();
+		detector.settle(grid, impactCells);
+	};
+	// The fixture saw every cell free once.
+	insertWithDefaults(1.1, [&] { fuse(twice, Mass::simpleFree(0.7), false); });
+	insertWithDefaults(1.2, [&] {
+		fuse(once, Mass::simpleOccupied(0.9), true);
+		fuse(twice, Mass::simpleOccupied(0.9), true);
+	});
+	EXPECT_EQ(grid.event(once), CellEvent::None);
+	EXPECT_EQ(grid.event(twice), CellEvent::Appeared);
+}
+
+TEST_F(DetectorOnAGrid, HitBesideCellsNeverSeenFreeIsNoArrivalAtOnce)
+{
+	// A block's corner seen for the first time: the beams crossed the free
+	// part of its cell (seen free twice here), the cells behind it were
+	// never seen free. Away from any structure a hit would be an arrival.
+	grid.reset(0.0, 1.0, 0.0, 1.0, 0.05, 1000);
+	const std::size_t corner = grid.geometry().index(5, 5);
+	for (int k = 0; k < 2; ++k)
+		insertion(0.1 * k, [&] { fuse(corner, Mass::simpleFree(0.9), false); });
+	insertion(0.2, [&] { fuse(corner, Mass::simpleOccupied(0.9), true); });
+	EXPECT_EQ(grid.event(corner), CellEvent::Leaving) << "pending";
+	// Its neighbours seen free too: the same hit is an arrival.
+	const std::size_t open = grid.geometry().index(15, 15);
+	for (int k = 0; k < 2; ++k)
+		insertion(0.3 + 0.1 * k, [&] {
+			for (int y = 14; y <= 16; ++y)
+				for (int x = 14; x <= 16; ++x)
+					fuse(grid.geometry().index(x, y), Mass::simpleFree(0.9), false);
+		});
+	insertion(0.5, [&] { fuse(open, Mass::simpleOccupied(0.9), true); });
+	EXPECT_EQ(grid.event(open), CellEvent::Appeared);
+}
+
 TEST_F(DetectorOnAGrid, PendingArrivalHitAgainOnlyMuchLaterStaysPending)
 {
 	insertion(1.0, [&] { weakHit(); });
@@ -95,12 +184,24 @@ TEST_F(DetectorOnAGrid, CellThatFlipsBetweenHitAndFreeIsNoArrival)
 	insertion(1.6, [&] { weakHit(); });
 	EXPECT_NE(grid.event(floor), CellEvent::Appeared);
 
-	// Long after the turn-down (kFlipMemory insertions) the cell is a
-	// floor cell like any other again.
-	for (int k = 0; k < 45; ++k) insertion(2.0 + 0.1 * k, [&] { freeSight(); });
-	insertion(7.0, [&] { weakHit(); });
-	insertion(7.1, [&] { weakHit(); });
-	EXPECT_EQ(grid.event(floor), CellEvent::Appeared);
+	// The turn-down marked the cell: long after it (past kFlipMemory
+	// insertions), two hits in a row beside the wall are still no arrival,
+	// while a cell that never flipped is confirmed by them.
+	EXPECT_TRUE(grid.flipped(floor));
+	const std::size_t other = grid.geometry().index(12, 10);
+	for (int k = 0; k < 45; ++k)
+		insertion(2.0 + 0.1 * k, [&] {
+			freeSight();
+			fuse(other, Mass::simpleFree(0.7), false);
+		});
+	for (const double t : {7.0, 7.1})
+		insertion(t, [&] {
+			weakHit();
+			fuse(other, Mass::simpleOccupied(0.55), true);
+		});
+	EXPECT_EQ(grid.event(floor), CellEvent::Leaving);
+	EXPECT_FALSE(grid.flipped(other));
+	EXPECT_EQ(grid.event(other), CellEvent::Appeared);
 }
 
 TEST_F(DetectorOnAGrid, ScanWhoseImpactsMostlyLandOnFreeCellsSettlesNothing)

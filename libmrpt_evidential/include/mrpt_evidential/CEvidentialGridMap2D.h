@@ -408,8 +408,10 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 		double motionWindow = 2.0;
 		/** `motionMinConflict`: least conflict of one cause, seen free
 		 * before and occupied now or the other way round, for a fusion to be
-		 * a motion event, (0, 1], default 0.5. */
-		double motionMinConflict = 0.5;
+		 * a motion event, (0, 1], default 0.65: with the default masses
+		 * (muF 0.7, muO 0.9) a cell must have been seen free twice, or hit
+		 * twice, before a change of it counts (doc/dynamics.md). */
+		double motionMinConflict = 0.65;
 		/** `motionClearance`: metres; a change closer than this to static
 		 * structure (cells that lean occupied and are not themselves moving)
 		 * is taken for the error of the robot's pose, not for motion,

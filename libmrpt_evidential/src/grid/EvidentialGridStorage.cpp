@@ -269,7 +269,7 @@ void EvidentialGridStorage::rebaseStamps(double to)
 		if (m_stampTimes[s] == to) newStamp[s] = present;
 	for (QuantizedCell& c : m_cells)
 	{
-		c.stamp = static_cast<std::uint16_t>((c.stamp & kHeldImpact) | present);
+		c.stamp = static_cast<std::uint16_t>((c.stamp & kStampFlags) | present);
 		if (m_keepsConflict || eventOf(c) == CellEvent::None) continue;
 		const std::uint16_t s = newStamp[eventStampOf(c)];
 		c.aside = s == kEventStampMask ? 0 : packEvent(eventOf(c), s);
@@ -343,7 +343,7 @@ void EvidentialGridStorage::assign(
 			if (c.occupied > c.free) c.stamp |= kHeldImpact;
 	}
 	for (const QuantizedCell& c : cells)
-		if (!isConsistent(c, keepsConflict) || (c.stamp & ~(kStampMask | kHeldImpact)) != 0 ||
+		if (!isConsistent(c, keepsConflict) || (c.stamp & ~(kStampMask | kStampFlags)) != 0 ||
 			(c.stamp & kStampMask) >= stampTimes.size() ||
 			(!keepsConflict &&
 			 (std::max(c.free, c.occupied) > ceiling ||

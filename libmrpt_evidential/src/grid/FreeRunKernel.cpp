@@ -98,7 +98,7 @@ void EvidentialGridStorage::fuseQuietFreeRun(
 	std::size_t idx = first;
 #if defined(__SSE2__)
 	const __m128 mass = _mm_set1_ps(w), ceiling = _mm_set1_ps(static_cast<float>(m_ceiling));
-	const __m128i heldImpact = _mm_set1_epi32(kHeldImpact),
+	const __m128i flags = _mm_set1_epi32(kStampFlags),
 				  stamp = _mm_set1_epi32(m_currentStamp),
 				  judged = _mm_set1_epi32(kEventJudgedWhenSeenFree),
 				  occupiedLimit = _mm_set1_epi32(static_cast<int>(occupiedBelow) - 1);
@@ -129,7 +129,7 @@ void EvidentialGridStorage::fuseQuietFreeRun(
 		__m128i freeOut, occupiedOut;
 		encodeFour(fuseFree(f, o, mass), ceiling, freeOut, occupiedOut);
 		storeFour(c, {in.aside, freeOut, occupiedOut,
-					  _mm_or_si128(_mm_and_si128(in.stamp, heldImpact), stamp)});
+					  _mm_or_si128(_mm_and_si128(in.stamp, flags), stamp)});
 	}
 #endif
 	for (; idx < end; ++idx)
@@ -149,7 +149,7 @@ void EvidentialGridStorage::fuseFreeRunKeepingConflict(
 	const __m128 scale = _mm_set1_ps(static_cast<float>(kMassScale)), mass = _mm_set1_ps(w),
 				 one = _mm_set1_ps(1.0f), half = _mm_set1_ps(0.5f),
 				 maxConflict = _mm_set1_ps(static_cast<float>(kMaxStoredConflict));
-	const __m128i heldImpact = _mm_set1_epi32(kHeldImpact), stamp = _mm_set1_epi32(m_currentStamp);
+	const __m128i flags = _mm_set1_epi32(kStampFlags), stamp = _mm_set1_epi32(m_currentStamp);
 	for (; idx + 4 <= end; idx += 4)
 	{
 		QuantizedCell* c = &m_cells[idx];
@@ -175,7 +175,7 @@ void EvidentialGridStorage::fuseFreeRunKeepingConflict(
 		__m128i freeOut, occupiedOut;
 		encodeFour(fused, scale, freeOut, occupiedOut);
 		storeFour(c, {conflictOut, freeOut, occupiedOut,
-					  _mm_or_si128(_mm_and_si128(in.stamp, heldImpact), stamp)});
+					  _mm_or_si128(_mm_and_si128(in.stamp, flags), stamp)});
 	}
 #endif
 	for (; idx < end; ++idx) fuseSimpleFree<Decays, true>(idx, w);

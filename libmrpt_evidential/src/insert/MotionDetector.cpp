@@ -65,10 +65,22 @@ bool CMotionDetector::nearStaticStructure(
 	return false;
 }
 
+bool CMotionDetector::besideUnseen(const EvidentialGridStorage& grid, std::size_t idx)
+{
+	const GridGeometry& g = grid.geometry();
+	const int cx = g.columnOf(idx), cy = g.rowOf(idx);
+	for (int y = std::max(0, cy - 1); y <= std::min(g.sizeY - 1, cy + 1); ++y)
+		for (int x = std::max(0, cx - 1); x <= std::min(g.sizeX - 1, cx + 1); ++x)
+			if (!(grid.read(g.index(x, y)).free > 0.0)) return true;
+	return false;
+}
+
 void CMotionDetector::settleArrival(
 	EvidentialGridStorage& grid, std::size_t idx, CellEvent before)
 {
-	if (!nearStaticStructure(grid, idx))
+	// Hit again while its arrival is recent: the thing is still there.
+	if (before == CellEvent::Appeared && isRecent(grid, idx)) return;
+	if (!nearStaticStructure(grid, idx) && !besideUnseen(grid, idx))
 	{
 		grid.setEvent(idx, CellEvent::Appeared), m_arrivals.push_back(idx);
 		return;
@@ -76,8 +88,10 @@ void CMotionDetector::settleArrival(
 	const double since = grid.eventTime(idx);
 	if (before == CellEvent::Leaving)
 	{
-		// Pending: confirmed by a hit at one of the next insertions.
-		const bool confirmed = !leansOccupied(grid.read(idx)) && since < grid.latestTime() &&
+		// Pending: confirmed by a hit at one of the next insertions, unless
+		// the cell has flipped before.
+		const bool confirmed = !leansOccupied(grid.read(idx)) && !grid.flipped(idx) &&
+			since < grid.latestTime() &&
 			since >= insertionTimeBefore(grid, kConfirmationInsertions);
 		if (confirmed) grid.setEventKeepingTime(idx, CellEvent::Appeared), m_arrivals.push_back(idx);
 		return;
@@ -112,22 +126,29 @@ void CMotionDetector::settle(EvidentialGridStorage& grid, std::size_t impactCell
 			settleArrival(grid, c.index, before);
 			continue;
 		}
-		if (!nearStaticStructure(grid, c.index))
+		if (leansOccupied(grid.read(c.index)))
 		{
-			// Nothing stands beside it that could explain a ray through it.
+			// Still leaning occupied: a ray may have grazed it (a wall's
+			// face, with the pose's error), and the static map does not say
+			// free yet. Remember when this began.
+			if (before != CellEvent::Leaving) grid.setEvent(c.index, CellEvent::Leaving);
+		}
+		else if (!nearStaticStructure(grid, c.index))
+		{
+			// Free now, and nothing stands beside it that could explain a
+			// ray through it.
 			if (before == CellEvent::Leaving)
 				grid.setEventKeepingTime(c.index, CellEvent::Disappeared);
 			else
 				grid.setEvent(c.index, CellEvent::Disappeared);
 		}
-		else if (leansOccupied(grid.read(c.index)))
-		{
-			// Beside structure and still leaning occupied: a ray may graze a
-			// wall. Remember when this began.
-			if (before != CellEvent::Leaving) grid.setEvent(c.index, CellEvent::Leaving);
-		}
 		else
+		{
+			// Beside structure and free again: a pending arrival turned down
+			// (or a grazed cell that turned free): the cell flips.
+			if (before == CellEvent::Leaving) grid.markFlipped(c.index);
 			grid.setEvent(c.index, CellEvent::None);
+		}
 	}
 }
 

@@ -15,12 +15,13 @@ namespace mrpt_evidential
  * occupied (m(O) > m(F) and m(O) >= 0.5). */
 inline bool leansOccupied(const Mass& m) { return m.occupied > m.free && m.occupied >= 0.5; }
 
-/** What decides an event, from the map's insertion options. */
+/** What decides an event, from the map's insertion options (the defaults
+ * are the map's). */
 struct TMotionRules
 {
 	/** Least conflict of one cause (appeared or left) for a fusion to be an
 	 * event. */
-	double minConflict = 0.5;
+	double minConflict = 0.65;
 	/** Changes within this many cells of static structure are taken for
 	 * pose error. */
 	int clearanceCells = 3;
@@ -35,18 +36,22 @@ struct TMotionRules
  * - Something appeared: a cell seen free now holds a beam's end (conflict
  *   before(F) observed(O) of at least minConflict). Beside static structure
  *   (a cell that held beams' ends, leans occupied and is not itself a recent
- *   arrival or leaving) that is likely the pose's error: the cell is only
- *   pending (CellEvent::Leaving while it leans free) until one of the next
- *   kConfirmationInsertions insertions hits it again. A thing that arrived
- *   is hit again at once; a cell that pose error flips beside a wall or a
- *   thing's face comes and goes, so a cell whose pending arrival was turned
- *   down (seen free) within the last kFlipMemory insertions starts its next
- *   one dated from then, too old to be confirmed.
+ *   arrival or leaving), or beside a cell never seen free (what stood hidden
+ *   is seen for the first time), that is likely the pose's error: the cell
+ *   is only pending (CellEvent::Leaving while it leans free) until one of
+ *   the next kConfirmationInsertions insertions hits it again. A thing that
+ *   arrived is hit again at once; a cell that pose error flips beside a wall
+ *   or a thing's face comes and goes, so a pending arrival turned down (seen
+ *   free) marks the cell flipped for good (never confirmed again), and a
+ *   cell set back to no event within the last kFlipMemory insertions starts
+ *   its next pending arrival dated from then, too old to be confirmed. An
+ *   arrival hit again while it is recent stays, with its time.
  * - Something left: a cell that leaned occupied and held beams' ends is
- *   seen free, away from static structure. Beside structure, a ray may graze
- *   a wall: while its evidence still leans occupied the cell is only Leaving
- *   (not reported), and a disappearance found later is dated from the first
- *   free sight.
+ *   seen free. While its evidence still leans occupied (a ray may have
+ *   grazed a wall or a pillar, and the static map does not say free yet)
+ *   the cell is only Leaving (not reported); once it no longer leans
+ *   occupied, away from static structure, its departure is reported, dated
+ *   from the first free sight.
  * - A misplaced scan: when a large share of the cells a scan's beams ended
  *   in were seen free before (kMisplacedShare of them, and at least
  *   kMisplacedArrivals), the scan disagrees with the map as a whole. That
@@ -128,6 +133,10 @@ class CMotionDetector
 	 * structure: it held beams' ends, leans occupied, and is not a recent
 	 * arrival or leaving. */
 	bool nearStaticStructure(const EvidentialGridStorage& grid, std::size_t idx) const;
+	/** True when a cell next to idx was never seen free (n(F) = 0): a hit
+	 * there is the first sight of what stood hidden behind it (a block's
+	 * corner, a wall's end), not a change of what the map had seen. */
+	static bool besideUnseen(const EvidentialGridStorage& grid, std::size_t idx);
 	bool isRecent(const EvidentialGridStorage& grid, std::size_t idx) const
 	{
 		return grid.latestTime() - grid.eventTime(idx) <= m_rules.window;

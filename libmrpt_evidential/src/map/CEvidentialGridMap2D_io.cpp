@@ -1,7 +1,7 @@
 /* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
  * CEvidentialGridMap2D: serialization (CSerializable).
  *
- * Layout of version 4, after MRPT's object header (class name, version byte),
+ * Layout of version 5, after MRPT's object header (class name, version byte),
  * every number little-endian:
  *   geometry     f64 xMin, f64 yMin, f64 resolution, i32 sizeX, i32 sizeY
  *   budget       u64 maxCells
@@ -28,7 +28,10 @@
  *   cells        sizeX * sizeY cells, row by row from (0, 0), each
  *                u16 aside, u16 free, u16 occupied, u16 stamp: the conflict
  *                (keepsConflict) or the motion event, and the normal part's
- *                free and occupied masses (QuantizedCell)
+ *                free and occupied masses (QuantizedCell); the stamp's
+ *                bit 15 says that the motion layer saw the cell flip
+ *                (kFlipped)
+ * Version 4 had that bit always 0 (its maps remember no flips).
  * Version 3 had no rendering options (read as the defaults).
  * Version 2 had no cloud options (groundRemoval to groundReturns: read as
  * the defaults). Version 1 had no freeMargin (read as 0), no motion options and no
@@ -165,7 +168,7 @@ std::uint16_t getU16(const std::uint8_t* p)
 }
 }  // namespace
 
-uint8_t CEvidentialGridMap2D::serializeGetVersion() const { return 4; }
+uint8_t CEvidentialGridMap2D::serializeGetVersion() const { return 5; }
 
 void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 {
@@ -237,7 +240,7 @@ void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 
 void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 {
-	if (version > 4) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+	if (version > 5) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
 
 	// Everything goes into locals: the map changes only once all is read,
 	// checked and validated.
@@ -337,6 +340,8 @@ void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 			c.free = getU16(p + 2);
 			c.occupied = getU16(p + 4);
 			c.stamp = getU16(p + 6);
+			if (version >= 2 && version < 5 && (c.stamp & kFlipped) != 0)
+				corrupted("a cell of version " + std::to_string(version) + " has bit 15 of its stamp set");
 			if (version == 0)
 			{
 				if (std::uint32_t(c.aside) + c.free + c.occupied > std::uint32_t(kMassScale))

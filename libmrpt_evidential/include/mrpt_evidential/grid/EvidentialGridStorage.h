@@ -272,6 +272,12 @@ class EvidentialGridStorage
 	 * but the scans being scored end where beams ended. */
 	void markImpact(std::size_t idx) { m_cells[idx].stamp |= kHeldImpact; }
 	bool heldImpact(std::size_t idx) const { return (m_cells[idx].stamp & kHeldImpact) != 0; }
+	/** Records that the motion layer saw cell idx flip (a pending arrival
+	 * beside static structure turned down): pose error, not the world,
+	 * changes such a cell, and it is never again confirmed an arrival
+	 * beside structure. Kept in map files (version 5). */
+	void markFlipped(std::size_t idx) { m_cells[idx].stamp |= kFlipped; }
+	bool flipped(std::size_t idx) const { return (m_cells[idx].stamp & kFlipped) != 0; }
 	/** Width of the masks mayBeStructure() returns. */
 	static constexpr int kMaskWidth = 32;
 	/** Bit k set when cell first + k (k < count <= kMaskWidth, all in one
@@ -378,10 +384,10 @@ class EvidentialGridStorage
 	{
 		return m_presentGain * m_stampGain[stamp & kStampMask];
 	}
-	/** Stamps a cell with the current insertion, keeping its impact flag. */
+	/** Stamps a cell with the current insertion, keeping its flags. */
 	void restamp(QuantizedCell& c) const
 	{
-		c.stamp = static_cast<std::uint16_t>((c.stamp & kHeldImpact) | m_currentStamp);
+		c.stamp = static_cast<std::uint16_t>((c.stamp & kStampFlags) | m_currentStamp);
 	}
 	/** Decays every cell to time `to` (>= every stamp's time) and makes it
 	 * the stamp of every cell; the times of recent events stay. */

@@ -18,7 +18,9 @@ namespace mrpt_evidential
  * `occupied` hold n(F) and n(O) in multiples of 1/kMassScale; n(Omega) is
  * what remains. The 14 low bits of `stamp` index the grid's table of
  * insertion times: the cell was last fused (or decayed) at that time; bit 14
- * (kHeldImpact) says that the cell has held a beam's impact, bit 15 is 0.
+ * (kHeldImpact) says that the cell has held a beam's impact, bit 15
+ * (kFlipped) that the motion layer saw it flip: a pending arrival beside
+ * static structure turned down (CMotionDetector).
  *
  * `aside` depends on what the grid keeps (EvidentialGridStorage::keepsConflict):
  * - K itself, for a grid that keeps conflict (ConflictHandling::Keep). The
@@ -66,6 +68,9 @@ enum class CellEvent : std::uint8_t
 /** The stamp's bits (QuantizedCell::stamp). */
 constexpr std::uint16_t kStampMask = 0x3FFF;
 constexpr std::uint16_t kHeldImpact = 0x4000;
+constexpr std::uint16_t kFlipped = 0x8000;
+/** The bits of the stamp that stay when a cell is stamped again. */
+constexpr std::uint16_t kStampFlags = kHeldImpact | kFlipped;
 
 /** Events keep their stamp in the 14 low bits of `aside`. */
 constexpr unsigned kEventStampBits = 14;
