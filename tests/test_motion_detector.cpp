@@ -1,10 +1,11 @@
 /* The motion layer's decisions on hand-made fusions (src/insert/): arrivals
  * beside static structure wait for a hit at the next insertions and stay
  * when hit again, a cell that flips between hit and free does not become an
- * arrival (then or later), nor does a hit beside cells never seen free, a departure waits until the cell no longer leans occupied, one
- * sight is not enough for the default rules, a scan whose impacts mostly
- * land on free cells (a misplaced one) settles nothing, and the list of
- * recent arrivals outlives growth that moves no cell. */
+ * arrival (then or later), nor does a hit beside cells never seen free at
+ * once, a departure waits until the cell no longer leans occupied, one sight
+ * is not enough for the default rules, a scan whose impacts mostly land on
+ * free cells (a misplaced one) settles nothing, and the list of recent
+ * arrivals outlives growth that moves no cell. */
 #include <gtest/gtest.h>
 #include "insert/MotionDetector.h"
 
