@@ -7,6 +7,8 @@
  * free cells (a misplaced one) settles nothing, and the list of recent
  * arrivals outlives growth that moves no cell. */
 #include <gtest/gtest.h>
+#include <mrpt_evidential/CEvidentialGridMap2D.h>
+
 #include "insert/MotionDetector.h"
 
 #include <algorithm>
@@ -123,7 +125,9 @@ TEST_F(DetectorOnAGrid, DefaultRulesNeedTwoSightsBeforeAChange)
 	// With the default masses (muF 0.7, muO 0.9), one free sight then a hit
 	// conflicts by 0.63: a cell seen once, as the first beams that reach a
 	// corner see it, is no arrival. Seen free twice, it is.
-	const TMotionRules defaults;
+	const double mapDefault = CEvidentialGridMap2D::TInsertionOptions().motionMinConflict;
+	const TMotionRules defaults{mapDefault, 2, 2.0};
+	ASSERT_EQ(TMotionRules().minConflict, mapDefault) << "the detector's default is the map's";
 	const std::size_t once = grid.geometry().index(3, 3), twice = grid.geometry().index(3, 17);
 	const auto insertWithDefaults = [&](double t, const std::function<void()>& fusions) {
 		grid.beginInsertion(t);

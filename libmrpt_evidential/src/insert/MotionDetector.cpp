@@ -55,9 +55,8 @@ bool CMotionDetector::nearStaticStructure(
 			{
 				const std::size_t cell = g.index(x + __builtin_ctz(maybe), y);
 				if (cell == idx || !leansOccupied(grid.read(cell))) continue;
-				const CellEvent e = grid.event(cell);
-				const bool moving = e == CellEvent::Leaving ||
-					(e == CellEvent::Appeared && isRecent(grid, cell));
+				const bool moving =
+					grid.event(cell) == CellEvent::Leaving || isRecentArrival(grid, cell);
 				if (!moving) return true;
 			}
 			x += n;
@@ -78,8 +77,6 @@ bool CMotionDetector::besideUnseen(const EvidentialGridStorage& grid, std::size_
 void CMotionDetector::settleArrival(
 	EvidentialGridStorage& grid, std::size_t idx, CellEvent before)
 {
-	// Hit again while its arrival is recent: the thing is still there.
-	if (before == CellEvent::Appeared && isRecent(grid, idx)) return;
 	if (!nearStaticStructure(grid, idx) && !besideUnseen(grid, idx))
 	{
 		grid.setEvent(idx, CellEvent::Appeared), m_arrivals.push_back(idx);

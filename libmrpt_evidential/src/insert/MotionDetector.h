@@ -45,7 +45,8 @@ struct TMotionRules
  *   free) marks the cell flipped for good (never confirmed again), and a
  *   cell set back to no event within the last kFlipMemory insertions starts
  *   its next pending arrival dated from then, too old to be confirmed. An
- *   arrival hit again while it is recent stays, with its time.
+ *   arrival hit again while it is recent is no candidate: it stays, with its
+ *   time.
  * - Something left: a cell that leaned occupied and held beams' ends is
  *   seen free. While its evidence still leans occupied (a ray may have
  *   grazed a wall or a pillar, and the static map does not say free yet)
@@ -78,7 +79,11 @@ class CMotionDetector
 		// that the sensor model's imprecision reaches; something leaves a
 		// cell that beams ended in.
 		if (impact && split.appeared >= m_rules.minConflict)
-			m_candidates.push_back({idx, CellEvent::Appeared});
+		{
+			// A recent arrival hit again: the thing is still there, nothing
+			// new (and no sign of a misplaced scan).
+			if (!isRecentArrival(grid, idx)) m_candidates.push_back({idx, CellEvent::Appeared});
+		}
 		else if (split.disappeared >= m_rules.minConflict && grid.heldImpact(idx))
 			m_candidates.push_back({idx, CellEvent::Disappeared});
 		else if (const CellEvent e = grid.event(idx); e != CellEvent::None)
@@ -140,6 +145,10 @@ class CMotionDetector
 	bool isRecent(const EvidentialGridStorage& grid, std::size_t idx) const
 	{
 		return grid.latestTime() - grid.eventTime(idx) <= m_rules.window;
+	}
+	bool isRecentArrival(const EvidentialGridStorage& grid, std::size_t idx) const
+	{
+		return grid.event(idx) == CellEvent::Appeared && isRecent(grid, idx);
 	}
 	/** The rules of a pending arrival, in insertions (see the class). */
 	static constexpr std::size_t kConfirmationInsertions = 2, kFlipMemory = 40;
