@@ -1,11 +1,13 @@
 /* The motion layer's decisions on hand-made fusions (src/insert/): arrivals
- * beside static structure wait for a hit at the next insertions and stay
- * when hit again, a cell that flips between hit and free does not become an
- * arrival (then or later), nor does a hit beside cells never seen free at
- * once, a departure waits until the cell no longer leans occupied, one sight
- * is not enough for the default rules, a scan whose impacts mostly land on
- * free cells (a misplaced one) settles nothing, and the list of recent
- * arrivals outlives growth that moves no cell. */
+ * beside static structure (the inside of a wall included) wait for a hit at
+ * the next insertions and stay when hit again, a thing that arrived long ago
+ * is no structure, a cell that flips between hit and free does not become
+ * an arrival (then or later), nor does a hit beside cells never seen free at
+ * once, a departure waits until the cell no longer leans occupied and is
+ * none beside a wall's unseen inside, one sight is not enough for the
+ * default rules, a scan whose impacts mostly land on free cells (a
+ * misplaced one) settles nothing, and the list of recent arrivals outlives
+ * growth that moves no cell. */
 #include <gtest/gtest.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 
@@ -166,6 +168,82 @@ TEST_F(DetectorOnAGrid, HitBesideCellsNeverSeenFreeIsNoArrivalAtOnce)
 		});
 	insertion(0.5, [&] { fuse(open, Mass::simpleOccupied(0.9), true); });
 	EXPECT_EQ(grid.event(open), CellEvent::Appeared);
+}
+
+TEST_F(DetectorOnAGrid, InsideOfAWallIsStructure)
+{
+	// The inside of a wall: never seen free, occupied by the imprecision's
+	// spread of the beams that end at its face, never an impact itself. A
+	// hit two cells from it is pending, as beside any structure.
+	grid.reset(0.0, 1.0, 0.0, 1.0, 0.05, 1000);
+	const GridGeometry& g = grid.geometry();
+	const std::size_t inside = g.index(5, 5), cell = g.index(7, 5), open = g.index(15, 15);
+	for (int k = 0; k < 2; ++k)
+		insertion(0.1 * k, [&] {
+			for (const int dy : {-1, 0, 1})
+				for (const int dx : {-1, 0, 1})
+				{
+					fuse(g.index(7 + dx, 5 + dy), Mass::simpleFree(0.9), false);
+					fuse(g.index(15 + dx, 15 + dy), Mass::simpleFree(0.9), false);
+				}
+			fuse(inside, Mass::simpleOccupied(0.9), false);
+		});
+	ASSERT_TRUE(leansOccupied(grid.read(inside)));
+	ASSERT_FALSE(grid.heldImpact(inside));
+	insertion(0.2, [&] {
+		fuse(cell, Mass::simpleOccupied(0.9), true);
+		fuse(open, Mass::simpleOccupied(0.9), true);
+	});
+	EXPECT_EQ(grid.event(cell), CellEvent::Leaving) << "pending";
+	EXPECT_EQ(grid.event(open), CellEvent::Appeared) << "the same hit in the open";
+}
+
+TEST_F(DetectorOnAGrid, GrazedFaceBesideAWallsUnseenInsideIsNoDeparture)
+{
+	// A wall's face that beams ended in, whose inside no beam reached: rays
+	// that graze it (the pose's error) turn it free. A thing that stood on
+	// floor seen free and left is turned free the same way, and is gone.
+	grid.reset(0.0, 1.0, 0.0, 1.0, 0.05, 1000);
+	const GridGeometry& g = grid.geometry();
+	const std::size_t face = g.index(5, 5), thing = g.index(15, 15);
+	insertion(0.0, [&] {
+		for (const int dy : {-1, 0, 1})
+			for (const int dx : {-1, 0, 1})
+				fuse(g.index(15 + dx, 15 + dy), Mass::simpleFree(0.9), false);
+	});
+	for (int k = 0; k < 10; ++k)
+		insertion(0.1 + 0.1 * k, [&] {
+			fuse(face, Mass::simpleOccupied(0.9), true);
+			fuse(thing, Mass::simpleOccupied(0.9), true);
+		});
+	double t = 1.1;
+	for (int k = 0; k < 30 && (leansOccupied(grid.read(face)) || leansOccupied(grid.read(thing)));
+		 ++k, t += 0.1)
+		insertion(t, [&] {
+			fuse(face, Mass::simpleFree(0.7), false);
+			fuse(thing, Mass::simpleFree(0.7), false);
+		});
+	ASSERT_FALSE(leansOccupied(grid.read(face)));
+	ASSERT_FALSE(leansOccupied(grid.read(thing)));
+	EXPECT_EQ(grid.event(thing), CellEvent::Disappeared);
+	EXPECT_EQ(grid.event(face), CellEvent::None);
+	EXPECT_TRUE(grid.flipped(face));
+}
+
+TEST_F(DetectorOnAGrid, ThingThatArrivedLongAgoIsNoStructure)
+{
+	// A thing that came and stays keeps its arrival, however old: its side,
+	// first hit later, is an arrival at once, not pending as beside a wall.
+	const GridGeometry& g = grid.geometry();
+	const std::size_t thing = g.index(3, 3), side = g.index(4, 3);
+	for (int k = 0; k < 10; ++k)
+		insertion(1.0 + 0.1 * k, [&] { fuse(thing, Mass::simpleOccupied(0.9), true); });
+	ASSERT_EQ(grid.event(thing), CellEvent::Appeared);
+	insertion(4.0, [&] { fuse(thing, Mass::simpleOccupied(0.9), true); });
+	EXPECT_EQ(grid.event(thing), CellEvent::Appeared) << "seen after its window, still there";
+	EXPECT_DOUBLE_EQ(grid.eventTime(thing), 1.0);
+	insertion(4.1, [&] { fuse(side, Mass::simpleOccupied(0.9), true); });
+	EXPECT_EQ(grid.event(side), CellEvent::Appeared);
 }
 
 TEST_F(DetectorOnAGrid, PendingArrivalHitAgainOnlyMuchLaterStaysPending)

@@ -36,21 +36,26 @@ void CMotionScorer::score(
 
 	// Appeared things are where beams end, left cells where beams pass.
 	m_truth.clear();
+	m_truthWhole.clear();
 	for (const int cell : seen.hit())
 		if (events.appeared(cell)) m_truth.push_back(cell);
-	scoreKind(Motion::Appeared, m_truth, seen.observed(), m_totals.appeared);
+	for (int cell = 0; cell < cells; ++cell)
+		if (events.appeared(cell)) m_truthWhole.push_back(cell);
+	scoreKind(Motion::Appeared, seen.observed(), m_totals.appeared);
 	m_truth.clear();
+	m_truthWhole.clear();
 	for (const int cell : seen.crossed())
 		if (events.disappeared(cell)) m_truth.push_back(cell);
-	scoreKind(
-		Motion::Disappeared, m_truth, seen.observed(), m_totals.disappeared);
+	for (int cell = 0; cell < cells; ++cell)
+		if (events.disappeared(cell)) m_truthWhole.push_back(cell);
+	scoreKind(Motion::Disappeared, seen.observed(), m_totals.disappeared);
 	scoreStatic(seen, k, time);
 }
 
 void CMotionScorer::scoreKind(
-	Motion kind, const std::vector<int>& truth,
-	const std::vector<int>& observed, TKindScore& out)
+	Motion kind, const std::vector<int>& observed, TKindScore& out)
 {
+	const std::vector<int>& truth = m_truth;
 	m_predicted.clear();
 	for (const int cell : observed)
 		if (m_motion[cell] == kind) m_predicted.push_back(cell);
@@ -61,10 +66,13 @@ void CMotionScorer::scoreKind(
 	out.predicted += m_predicted.size();
 	out.mapCells += m_whole.size();
 
-	// Each table costs a pass over the grid: built only when asked.
+	// Each table costs a pass over the grid: built only when asked. Both
+	// sides are matched against the other's whole set: the map may flag a
+	// thing from where this scan did not look, and a flag may stand beside
+	// a cell of the thing this scan did not reach.
 	if (!m_predicted.empty())
 	{
-		m_near.assign(truth);
+		m_near.assign(m_truthWhole);
 		for (const int cell : m_predicted)
 			out.truePositives += m_near.anyWithin(cell, m_tolerance);
 	}

@@ -23,8 +23,9 @@ struct TKindScore
 	/** Truth cells, and those the map's whole set of the kind holds a cell
 	 * near. */
 	std::size_t truth = 0, recalled = 0;
-	/** Observed cells the map flags with the kind, and those a truth cell
-	 * of the kind lies near. */
+	/** Observed cells the map flags with the kind, and those a cell of the
+	 * truth's whole set of the kind (observed by the scan or not) lies
+	 * near. */
 	std::size_t predicted = 0, truePositives = 0;
 	/** Cells of the truth's grid the map flags with the kind, observed or
 	 * not. */
@@ -56,8 +57,9 @@ struct TMotionScore
 
 /** Scores the map after each scan: the truth's events among the cells the
  * scan observed against the map's motion read at the truth cells' centres,
- * a predicted cell being right and a truth cell recalled when a cell of the
- * other side lies within `tolerance` cells (Chebyshev). */
+ * a truth cell recalled when a cell of the map's whole set lies within
+ * `tolerance` cells (Chebyshev), a predicted (observed) cell right when a
+ * cell of the truth's whole set does. */
 class CMotionScorer
 {
    public:
@@ -73,9 +75,11 @@ class CMotionScorer
 	const TMotionScore& totals() const { return m_totals; }
 
    private:
+	/** Scores one kind, its truth among the observed cells in m_truth and
+	 * in the whole grid in m_truthWhole. */
 	void scoreKind(
-		mrpt_evidential::Motion kind, const std::vector<int>& truth,
-		const std::vector<int>& observed, TKindScore& out);
+		mrpt_evidential::Motion kind, const std::vector<int>& observed,
+		TKindScore& out);
 	void scoreStatic(const CObservedCells& seen, std::size_t k, double time);
 
 	const TTruthGrid& m_grid;
@@ -84,7 +88,7 @@ class CMotionScorer
 	/** The map's motion at each truth cell's centre, this scan. */
 	std::vector<mrpt_evidential::Motion> m_motion;
 	CNearCells m_near;
-	std::vector<int> m_truth, m_predicted, m_whole;
+	std::vector<int> m_truth, m_truthWhole, m_predicted, m_whole;
 	TMotionScore m_totals;
 };
 

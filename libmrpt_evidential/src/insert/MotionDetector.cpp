@@ -29,9 +29,11 @@ void CMotionDetector::afterFusionOfEventCell(
 		m_candidates.push_back({idx, CellEvent::Disappeared});
 	else if (e == CellEvent::Disappeared && seenOccupied)
 		m_candidates.push_back({idx, CellEvent::Appeared});
-	else if (e != CellEvent::Leaving && !isRecent(grid, idx))
-		// Seen again, as it was, after its window: the event is over.
-		// Clearing it keeps the cell out of the slow path of later scans.
+	else if (e == CellEvent::Disappeared && !isRecent(grid, idx))
+		// Seen free again after its window: the event is over. Clearing it
+		// keeps the cell out of the slow path of later scans. An arrival
+		// stays while the thing does: it is no structure (see
+		// nearStaticStructure), and its leaving is a departure.
 		grid.setEvent(idx, CellEvent::None);
 	else if (e == CellEvent::Leaving && seenOccupied)
 		grid.setEvent(idx, CellEvent::None);
@@ -55,9 +57,10 @@ bool CMotionDetector::nearStaticStructure(
 			{
 				const std::size_t cell = g.index(x + __builtin_ctz(maybe), y);
 				if (cell == idx || !leansOccupied(grid.read(cell))) continue;
-				const bool moving =
-					grid.event(cell) == CellEvent::Leaving || isRecentArrival(grid, cell);
-				if (!moving) return true;
+				// A thing that arrived, however long ago, is no structure:
+				// its sides, first seen later, are arrivals too.
+				const CellEvent e = grid.event(cell);
+				if (e != CellEvent::Leaving && e != CellEvent::Appeared) return true;
 			}
 			x += n;
 		}
@@ -70,7 +73,13 @@ bool CMotionDetector::besideUnseen(const EvidentialGridStorage& grid, std::size_
 	const int cx = g.columnOf(idx), cy = g.rowOf(idx);
 	for (int y = std::max(0, cy - 1); y <= std::min(g.sizeY - 1, cy + 1); ++y)
 		for (int x = std::max(0, cx - 1); x <= std::min(g.sizeX - 1, cx + 1); ++x)
-			if (!(grid.read(g.index(x, y)).free > 0.0)) return true;
+		{
+			// An arrival was seen free before its thing came, however
+			// little free mass its hits left it.
+			const std::size_t cell = g.index(x, y);
+			if (!(grid.read(cell).free > 0.0) && grid.event(cell) != CellEvent::Appeared)
+				return true;
+		}
 	return false;
 }
 
@@ -130,10 +139,12 @@ void CMotionDetector::settle(EvidentialGridStorage& grid, std::size_t impactCell
 			// free yet. Remember when this began.
 			if (before != CellEvent::Leaving) grid.setEvent(c.index, CellEvent::Leaving);
 		}
-		else if (!nearStaticStructure(grid, c.index))
+		else if (!nearStaticStructure(grid, c.index) && !besideUnseen(grid, c.index))
 		{
 			// Free now, and nothing stands beside it that could explain a
-			// ray through it.
+			// ray through it: no structure, and no unseen inside of a wall
+			// whose face a ray grazed (the face's cells then all turn free
+			// together, and none of them counts as structure).
 			if (before == CellEvent::Leaving)
 				grid.setEventKeepingTime(c.index, CellEvent::Disappeared);
 			else

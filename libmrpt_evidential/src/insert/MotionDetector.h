@@ -35,9 +35,10 @@ struct TMotionRules
  *
  * - Something appeared: a cell seen free now holds a beam's end (conflict
  *   before(F) observed(O) of at least minConflict). Beside static structure
- *   (a cell that held beams' ends, leans occupied and is not itself a recent
- *   arrival or leaving), or beside a cell never seen free (what stood hidden
- *   is seen for the first time), that is likely the pose's error: the cell
+ *   (a cell that leans occupied, held beams' ends or was never seen free,
+ *   and is not itself an arrival, of any age, or leaving), or beside a cell
+ *   never seen free (what stood hidden is seen for the first time), that is
+ *   likely the pose's error: the cell
  *   is only pending (CellEvent::Leaving while it leans free) until one of
  *   the next kConfirmationInsertions insertions hits it again. A thing that
  *   arrived is hit again at once; a cell that pose error flips beside a wall
@@ -51,8 +52,10 @@ struct TMotionRules
  *   seen free. While its evidence still leans occupied (a ray may have
  *   grazed a wall or a pillar, and the static map does not say free yet)
  *   the cell is only Leaving (not reported); once it no longer leans
- *   occupied, away from static structure, its departure is reported, dated
- *   from the first free sight.
+ *   occupied, away from static structure and from cells never seen free (a
+ *   wall's inside, behind a face that rays grazed), its departure is
+ *   reported, dated from the first free sight. An arrival stays while its
+ *   thing does; a departure seen free again after its window is over.
  * - A misplaced scan: when a large share of the cells a scan's beams ended
  *   in were seen free before (kMisplacedShare of them, and at least
  *   kMisplacedArrivals), the scan disagrees with the map as a whole. That
@@ -135,12 +138,15 @@ class CMotionDetector
 		EvidentialGridStorage& grid, std::size_t idx, CellEvent e,
 		const Mass& observed, bool impact);
 	/** True when a cell within clearanceCells of idx (idx excluded) is static
-	 * structure: it held beams' ends, leans occupied, and is not a recent
-	 * arrival or leaving. */
+	 * structure: it leans occupied, held beams' ends or was never seen free
+	 * (a wall's inside), and is not an arrival (of any age: a thing that came
+	 * and stays is no structure) or leaving. */
 	bool nearStaticStructure(const EvidentialGridStorage& grid, std::size_t idx) const;
-	/** True when a cell next to idx was never seen free (n(F) = 0): a hit
-	 * there is the first sight of what stood hidden behind it (a block's
-	 * corner, a wall's end), not a change of what the map had seen. */
+	/** True when a cell next to idx was never seen free (n(F) = 0; an
+	 * arrival's cell counts as seen): a hit there is the first sight of what
+	 * stood hidden behind it (a block's corner, a wall's end), and a cell
+	 * turned free there is a wall's face that rays grazed, not a change of
+	 * what the map had seen. */
 	static bool besideUnseen(const EvidentialGridStorage& grid, std::size_t idx);
 	bool isRecent(const EvidentialGridStorage& grid, std::size_t idx) const
 	{

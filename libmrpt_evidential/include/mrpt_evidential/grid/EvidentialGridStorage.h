@@ -281,18 +281,19 @@ class EvidentialGridStorage
 	/** Width of the masks mayBeStructure() returns. */
 	static constexpr int kMaskWidth = 32;
 	/** Bit k set when cell first + k (k < count <= kMaskWidth, all in one
-	 * row) held an impact and may have m(O) > m(F) and m(O) >= 0.5, decayed
-	 * or not (decay only scales both down): a test on the stored values,
-	 * without branches or decoding, that rules most cells out. */
+	 * row) held an impact or was never seen free (the inside of a wall,
+	 * which beams end before), and may have m(O) > m(F) and m(O) >= 0.5,
+	 * decayed or not (decay only scales both down): a test on the stored
+	 * values, without branches or decoding, that rules most cells out. */
 	std::uint32_t mayBeStructure(std::size_t first, int count) const
 	{
 		std::uint32_t mask = 0;
 		for (int k = 0; k < count; ++k)
 		{
 			const QuantizedCell& c = m_cells[first + static_cast<std::size_t>(k)];
-			const bool held = (c.stamp & kHeldImpact) != 0;
+			const bool heldOrInside = (c.stamp & kHeldImpact) != 0 || c.free == 0;
 			const bool leans = c.occupied > c.free && c.occupied >= kMassScale / 2;
-			mask |= static_cast<std::uint32_t>(held && leans) << k;
+			mask |= static_cast<std::uint32_t>(heldOrInside && leans) << k;
 		}
 		return mask;
 	}
