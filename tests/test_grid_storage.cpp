@@ -598,6 +598,45 @@ TEST(GridStorage, QuietFreeRunsFuseAsCellByCellAndListTheLoudInOrder)
 			}
 }
 
+TEST(GridStorage, SaturatedFreeCellsWithoutDecayReadAsCellByCell)
+{
+	// Cells free at the ceiling, in runs long enough for whole groups of
+	// four, among varied ones: without decay the bulk leaves them as they
+	// are (only their stamp stays older), which reads the same now and after
+	// a change of rate (it rebases every stamp first).
+	EvidentialGridStorage bulk = gridWithVariedCells(0.0, 5);
+	const std::size_t cells = bulk.geometry().cellCount();
+	for (std::size_t idx = 0; idx < cells; ++idx)
+		if (idx % 50 < 30) bulk.write(idx, Mass{0.0, 1.0, 0.0, 0.0});
+	bulk.beginInsertion(107.0);
+	EvidentialGridStorage oneByOne = bulk;
+	const float w = 0.37f;
+	const std::uint16_t occupiedBelow = 20000;
+	std::vector<std::size_t> loud;
+	bulk.fuseQuietFreeRun<false>(0, cells, w, occupiedBelow, loud);
+	for (std::size_t idx = 0; idx < cells; ++idx)
+		if (!oneByOne.isLoud(idx, occupiedBelow)) oneByOne.fuseSimpleFree<false, false>(idx, w);
+	const auto sameReading = [&](const char* when) {
+		for (std::size_t idx = 0; idx < cells; ++idx)
+		{
+			const Mass a = bulk.read(idx), b = oneByOne.read(idx);
+			ASSERT_EQ(a.free, b.free) << when << " cell " << idx;
+			ASSERT_EQ(a.occupied, b.occupied) << when << " cell " << idx;
+			ASSERT_EQ(a.unknown, b.unknown) << when << " cell " << idx;
+			ASSERT_EQ(bulk.event(idx), oneByOne.event(idx));
+			ASSERT_EQ(bulk.heldImpact(idx), oneByOne.heldImpact(idx));
+			ASSERT_EQ(bulk.flipped(idx), oneByOne.flipped(idx));
+		}
+	};
+	sameReading("now");
+	EXPECT_FALSE(bulk.cells() == oneByOne.cells()) << "the saturated cells were skipped";
+	bulk.setDecayRate(0.05);
+	oneByOne.setDecayRate(0.05);
+	bulk.beginInsertion(120.0);
+	oneByOne.beginInsertion(120.0);
+	sameReading("after a change of rate");
+}
+
 TEST(GridStorage, FreeRunsKeepingConflictFuseAsCellByCell)
 {
 	for (const double rate : {0.0, 0.05})

@@ -101,7 +101,8 @@ void EvidentialGridStorage::fuseQuietFreeRun(
 	const __m128i flags = _mm_set1_epi32(kStampFlags),
 				  stamp = _mm_set1_epi32(m_currentStamp),
 				  judged = _mm_set1_epi32(kEventJudgedWhenSeenFree),
-				  occupiedLimit = _mm_set1_epi32(static_cast<int>(occupiedBelow) - 1);
+				  occupiedLimit = _mm_set1_epi32(static_cast<int>(occupiedBelow) - 1),
+				  ceilingWord = _mm_set1_epi32(m_ceiling), zero = _mm_setzero_si128();
 	for (; idx + 4 <= end; idx += 4)
 	{
 		QuantizedCell* c = &m_cells[idx];
@@ -118,6 +119,15 @@ void EvidentialGridStorage::fuseQuietFreeRun(
 				else
 					fuseSimpleFree<Decays, false>(k, w);
 			continue;
+		}
+		if constexpr (!Decays)
+		{
+			// Free at the ceiling, nothing occupied: the fusion gives the
+			// cell back as it was, and without decay its stamp means
+			// nothing (a change of rate first rebases every stamp).
+			const __m128i saturated = _mm_and_si128(
+				_mm_cmpeq_epi32(in.free, ceilingWord), _mm_cmpeq_epi32(in.occupied, zero));
+			if (_mm_movemask_epi8(saturated) == 0xFFFF) continue;
 		}
 		__m128 f = _mm_cvtepi32_ps(in.free), o = _mm_cvtepi32_ps(in.occupied);
 		if constexpr (Decays)
