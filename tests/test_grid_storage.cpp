@@ -601,21 +601,33 @@ TEST(GridStorage, QuietFreeRunsFuseAsCellByCellAndListTheLoudInOrder)
 TEST(GridStorage, SaturatedFreeCellsWithoutDecayReadAsCellByCell)
 {
 	// Cells free at the ceiling, in runs long enough for whole groups of
-	// four, among varied ones: without decay the bulk leaves them as they
-	// are (only their stamp stays older), which reads the same now and after
-	// a change of rate (it rebases every stamp first).
+	// four, among varied ones: without decay the bulk (and the cell-by-cell
+	// fusion) leaves them as they are (only their stamp stays older), which
+	// reads as the full arithmetic does, now and after a change of rate (it
+	// rebases every stamp first).
 	EvidentialGridStorage bulk = gridWithVariedCells(0.0, 5);
 	const std::size_t cells = bulk.geometry().cellCount();
 	for (std::size_t idx = 0; idx < cells; ++idx)
-		if (idx % 50 < 30) bulk.write(idx, Mass{0.0, 1.0, 0.0, 0.0});
+		if (idx % 50 < 30)
+		{
+			bulk.write(idx, Mass{0.0, 1.0, 0.0, 0.0});
+			bulk.setEvent(idx, CellEvent::None);  // quiet, so that groups mix both kinds
+		}
 	bulk.beginInsertion(107.0);
 	EvidentialGridStorage oneByOne = bulk;
 	const float w = 0.37f;
 	const std::uint16_t occupiedBelow = 20000;
 	std::vector<std::size_t> loud;
 	bulk.fuseQuietFreeRun<false>(0, cells, w, occupiedBelow, loud);
+	EvidentialGridStorage alsoSkipping = oneByOne;
 	for (std::size_t idx = 0; idx < cells; ++idx)
-		if (!oneByOne.isLoud(idx, occupiedBelow)) oneByOne.fuseSimpleFree<false, false>(idx, w);
+		if (!alsoSkipping.isLoud(idx, occupiedBelow))
+			alsoSkipping.fuseSimpleFree<false, false>(idx, w);
+	EXPECT_TRUE(bulk.cells() == alsoSkipping.cells()) << "the bulk as cell by cell";
+	// The full arithmetic, cell by cell: the decaying path at rate 0 (a
+	// factor of exactly 1) skips no cell.
+	for (std::size_t idx = 0; idx < cells; ++idx)
+		if (!oneByOne.isLoud(idx, occupiedBelow)) oneByOne.fuseSimpleFree<true, false>(idx, w);
 	const auto sameReading = [&](const char* when) {
 		for (std::size_t idx = 0; idx < cells; ++idx)
 		{

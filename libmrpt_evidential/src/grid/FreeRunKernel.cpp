@@ -120,12 +120,14 @@ void EvidentialGridStorage::fuseQuietFreeRun(
 					fuseSimpleFree<Decays, false>(k, w);
 			continue;
 		}
+		// Free at the ceiling, nothing occupied: the fusion gives the cell
+		// back as it was, and without decay its stamp means nothing (a
+		// change of rate first rebases every stamp). Such cells are left as
+		// they are, stamp included, as fuseSimpleFree() leaves them.
+		__m128i saturated = zero;
 		if constexpr (!Decays)
 		{
-			// Free at the ceiling, nothing occupied: the fusion gives the
-			// cell back as it was, and without decay its stamp means
-			// nothing (a change of rate first rebases every stamp).
-			const __m128i saturated = _mm_and_si128(
+			saturated = _mm_and_si128(
 				_mm_cmpeq_epi32(in.free, ceilingWord), _mm_cmpeq_epi32(in.occupied, zero));
 			if (_mm_movemask_epi8(saturated) == 0xFFFF) continue;
 		}
@@ -138,8 +140,10 @@ void EvidentialGridStorage::fuseQuietFreeRun(
 		}
 		__m128i freeOut, occupiedOut;
 		encodeFour(fuseFree(f, o, mass), ceiling, freeOut, occupiedOut);
+		const __m128i restamped = _mm_or_si128(_mm_and_si128(in.stamp, flags), stamp);
 		storeFour(c, {in.aside, freeOut, occupiedOut,
-					  _mm_or_si128(_mm_and_si128(in.stamp, flags), stamp)});
+					  _mm_or_si128(_mm_and_si128(saturated, in.stamp),
+								   _mm_andnot_si128(saturated, restamped))});
 	}
 #endif
 	for (; idx < end; ++idx)

@@ -206,6 +206,10 @@ class EvidentialGridStorage
 	void fuseSimpleFree(std::size_t idx, float w)
 	{
 		QuantizedCell& c = m_cells[idx];
+		// Free at the ceiling, nothing occupied, no decay: the fusion gives
+		// the cell back as it was, and its stamp means nothing.
+		if constexpr (!Decays && !KeepsConflict)
+			if (c.free == m_ceiling && c.occupied == 0) return;
 		const float scale = static_cast<float>(kMassScale);
 		float f = c.free, o = c.occupied;
 		float keep = KeepsConflict ? 1.0f - c.aside / scale : 1.0f;
