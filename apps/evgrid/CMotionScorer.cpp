@@ -36,26 +36,24 @@ void CMotionScorer::score(
 
 	// Appeared things are where beams end, left cells where beams pass.
 	m_truth.clear();
-	m_truthWhole.clear();
 	for (const int cell : seen.hit())
 		if (events.appeared(cell)) m_truth.push_back(cell);
-	for (int cell = 0; cell < cells; ++cell)
-		if (events.appeared(cell)) m_truthWhole.push_back(cell);
-	scoreKind(Motion::Appeared, seen.observed(), m_totals.appeared);
+	scoreKind(
+		Motion::Appeared, m_truth, seen.observed(),
+		[&](int cell) { return events.appeared(cell); }, m_totals.appeared);
 	m_truth.clear();
-	m_truthWhole.clear();
 	for (const int cell : seen.crossed())
 		if (events.disappeared(cell)) m_truth.push_back(cell);
-	for (int cell = 0; cell < cells; ++cell)
-		if (events.disappeared(cell)) m_truthWhole.push_back(cell);
-	scoreKind(Motion::Disappeared, seen.observed(), m_totals.disappeared);
+	scoreKind(
+		Motion::Disappeared, m_truth, seen.observed(),
+		[&](int cell) { return events.disappeared(cell); }, m_totals.disappeared);
 	scoreStatic(seen, k, time);
 }
 
 void CMotionScorer::scoreKind(
-	Motion kind, const std::vector<int>& observed, TKindScore& out)
+	Motion kind, const std::vector<int>& truth, const std::vector<int>& observed,
+	const std::function<bool(int)>& isTruth, TKindScore& out)
 {
-	const std::vector<int>& truth = m_truth;
 	m_predicted.clear();
 	for (const int cell : observed)
 		if (m_motion[cell] == kind) m_predicted.push_back(cell);
@@ -72,6 +70,9 @@ void CMotionScorer::scoreKind(
 	// a cell of the thing this scan did not reach.
 	if (!m_predicted.empty())
 	{
+		m_truthWhole.clear();
+		for (int cell = 0, n = static_cast<int>(m_motion.size()); cell < n; ++cell)
+			if (isTruth(cell)) m_truthWhole.push_back(cell);
 		m_near.assign(m_truthWhole);
 		for (const int cell : m_predicted)
 			out.truePositives += m_near.anyWithin(cell, m_tolerance);

@@ -6,6 +6,7 @@
 #include <mrpt_evidential/Motion.h>
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "CMotionTruth.h"
@@ -75,10 +76,11 @@ class CMotionScorer
 	const TMotionScore& totals() const { return m_totals; }
 
    private:
-	/** Scores one kind, its truth among the observed cells in m_truth and
-	 * in the whole grid in m_truthWhole. */
+	/** Scores one kind: `truth`, its truth cells among the observed ones;
+	 * `isTruth`, whether any cell of the grid holds a truth event of it. */
 	void scoreKind(
-		mrpt_evidential::Motion kind, const std::vector<int>& observed,
+		mrpt_evidential::Motion kind, const std::vector<int>& truth,
+		const std::vector<int>& observed, const std::function<bool(int)>& isTruth,
 		TKindScore& out);
 	void scoreStatic(const CObservedCells& seen, std::size_t k, double time);
 

@@ -77,7 +77,7 @@ bool CMotionDetector::besideUnseen(const EvidentialGridStorage& grid, std::size_
 			// An arrival was seen free before its thing came, however
 			// little free mass its hits left it.
 			const std::size_t cell = g.index(x, y);
-			if (!(grid.read(cell).free > 0.0) && grid.event(cell) != CellEvent::Appeared)
+			if (grid.neverSeenFree(cell) && grid.event(cell) != CellEvent::Appeared)
 				return true;
 		}
 	return false;

@@ -276,6 +276,9 @@ class EvidentialGridStorage
 	 * but the scans being scored end where beams ended. */
 	void markImpact(std::size_t idx) { m_cells[idx].stamp |= kHeldImpact; }
 	bool heldImpact(std::size_t idx) const { return (m_cells[idx].stamp & kHeldImpact) != 0; }
+	/** No free mass stored (n(F) = 0, decayed or not): the cell was never
+	 * seen free, or hits left it none. */
+	bool neverSeenFree(std::size_t idx) const { return neverSeenFree(m_cells[idx]); }
 	/** Records that the motion layer saw cell idx flip (a pending arrival
 	 * beside static structure turned down): pose error, not the world,
 	 * changes such a cell, and it is never again confirmed an arrival
@@ -295,7 +298,7 @@ class EvidentialGridStorage
 		for (int k = 0; k < count; ++k)
 		{
 			const QuantizedCell& c = m_cells[first + static_cast<std::size_t>(k)];
-			const bool heldOrInside = (c.stamp & kHeldImpact) != 0 || c.free == 0;
+			const bool heldOrInside = (c.stamp & kHeldImpact) != 0 || neverSeenFree(c);
 			const bool leans = c.occupied > c.free && c.occupied >= kMassScale / 2;
 			mask |= static_cast<std::uint32_t>(heldOrInside && leans) << k;
 		}
@@ -382,6 +385,7 @@ class EvidentialGridStorage
 		f = c.free * s;
 		o = c.occupied * s;
 	}
+	static bool neverSeenFree(const QuantizedCell& c) { return c.free == 0; }
 	/** exp(-decayRate (latestTime - time of stamp)); exactly 1 without
 	 * decay (every gain is then exp(0)). No branch, so that the insertion
 	 * kernels vectorize. */
