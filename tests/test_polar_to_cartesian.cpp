@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
 #include <vector>
 
 #include "support/scans.h"
@@ -15,6 +16,34 @@ using mrpt::obs::CObservation2DRangeScan;
 
 namespace
 {
+/** The free margin along sector s's beam, from the definition: freeMargin
+ * across the surface its nearest impact lies on, the surface's slope taken
+ * from the nearest impacts two sectors away on the flatter side, the
+ * stretch 1 / cos(incidence) at most 3. */
+double referenceMargin(const CPolarSourceGrid& polar, std::size_t s)
+{
+	const long n = static_cast<long>(polar.sectorCount());
+	const auto nearest = [&](long t) {
+		if (polar.fullTurn()) t = ((t % n) + n) % n;
+		// A beam without return (an impact at infinity) hit no surface.
+		if (t < 0 || t >= n || polar.impacts(static_cast<std::size_t>(t)).empty() ||
+			!std::isfinite(polar.impacts(static_cast<std::size_t>(t)).front()))
+			return std::optional<double>();
+		return std::optional<double>(polar.impacts(static_cast<std::size_t>(t)).front());
+	};
+	const auto r = nearest(static_cast<long>(s));
+	if (!r || polar.freeMargin() == 0.0) return polar.freeMargin();
+	std::optional<double> flattest;
+	for (const long t : {static_cast<long>(s) - 2, static_cast<long>(s) + 2})
+		if (const auto other = nearest(t))
+		{
+			const double incidence = std::atan(std::abs(*other - *r) / (*r * 2 * polar.sectorSpacing()));
+			if (!flattest || incidence < *flattest) flattest = incidence;
+		}
+	if (!flattest) return polar.freeMargin();
+	return polar.freeMargin() * std::min(3.0, 1.0 / std::cos(*flattest));
+}
+
 /** The bilinear mix at a point of the sensor's frame, straight from the
  * definition; vacuous outside the field of view and beyond reach. */
 Mass referenceMix(
@@ -65,13 +94,13 @@ Mass referenceMix(
 		touchesImpact |= p.occupied > 0;
 	}
 	// Free evidence stops at the nearer sector's nearest impact, less half a
-	// bin or the free margin; a sector of no weight (a cell on the other
+	// bin or the sector's free margin; a sector of no weight (a cell on the other
 	// one's centre line) does not count.
 	const auto limit = [&](std::size_t s) {
 		const auto& impacts = polar.impacts(s);
 		if (impacts.empty() || !(impacts.front() < nBins * polar.binSize()))
 			return HUGE_VAL;
-		return std::max(0.0, impacts.front() - std::max(0.5 * polar.binSize(), polar.freeMargin()));
+		return std::max(0.0, impacts.front() - std::max(0.5 * polar.binSize(), referenceMargin(polar, s)));
 	};
 	const double lim = ws < 1e-6 ? limit(s0)
 		: ws > 1 - 1e-6          ? limit(s1)
@@ -133,6 +162,7 @@ TEST(PolarToCartesian, VisitsExactlyTheInformedCellsWithTheirMix)
 			options.binSize = 0.05;
 			options.maxRange = 6.0;
 			options.invalidRangesAsFree = trial % 2 == 1;
+			options.freeMargin = trial >= 2 ? 0.15 : 0.0;
 			polar.build(randomScan(rng, c.beams, c.aperture), options);
 			const PlanarSensorPose sensor{
 				-1 + 2 * u(rng), -1 + 2 * u(rng), -M_PI + 2 * M_PI * u(rng),
@@ -204,4 +234,46 @@ TEST(PolarToCartesian, VisitsExactlyTheInformedCellsWithTheirMix)
 				EXPECT_GT(uniform, seen.size() / 3) << "the uniform region is used";
 			}
 		}
+}
+
+TEST(PolarToCartesian, FreeMarginHoldsAcrossAWallAtAnyIncidence)
+{
+	// A straight wall 3 m ahead, beams every half degree: the cells within
+	// the margin's depth in front of the wall get no free evidence whatever
+	// the incidence up to 60 degrees (a margin along the beam would protect
+	// only its cosine there), and the margin does not grow on a head-on wall.
+	const double margin = 0.2;
+	TSourceGridOptions options;
+	options.sensorModel.model = SensorModel::MultiEcho;
+	options.binSize = 0.05;
+	options.maxRange = 20.0;
+	options.freeMargin = margin;
+	CPolarSourceGrid polar;
+	polar.build(
+		test::scanByAngle(
+			301, test::ScanSetup().aperture(150 * M_PI / 180),
+			[](double a) { return 3.0 / std::cos(a); }),
+		options);
+	CPolarToCartesian transform;
+	transform.setup(polar, PlanarSensorPose{0, 0, 0, false});
+	EvidentialGridStorage grid;
+	grid.reset(-1, 4, -6, 6, 0.025, 1'000'000);
+	const GridGeometry& g = grid.geometry();
+	std::map<std::size_t, double> freeMass;
+	transform.forEachInformedCell(
+		g, [&](std::size_t idx, const Mass& m) { freeMass[idx] = m.free; },
+		[&](std::size_t first, std::size_t count) {
+			for (std::size_t idx = first; idx < first + count; ++idx)
+				freeMass[idx] = transform.uniformMass().free;
+		});
+	const auto freeAt = [&](double x, double y) {
+		const auto it = freeMass.find(g.index(g.cellX(x), g.cellY(y)));
+		return it == freeMass.end() ? 0.0 : it->second;
+	};
+	for (const double incidence : {0.0, 30.0, 45.0, 60.0})
+	{
+		const double y = 3.0 * std::tan(incidence * M_PI / 180);
+		EXPECT_EQ(freeAt(3.0 - 0.75 * margin, y), 0.0) << incidence << " degrees";
+	}
+	EXPECT_GT(freeAt(3.0 - 1.5 * margin, 0.0), 0.5);
 }

@@ -378,8 +378,10 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 		 * to maxRange, default false (it proves nothing). */
 		bool invalidRangesAsFree = false;
 		/** `freeMargin`: metres before each impact where a beam proves
-		 * nothing free (TSourceGridOptions::freeMargin), >= 0, default 0.2. */
-		double freeMargin = 0.2;
+		 * nothing free, measured across the surface it hit (longer along a
+		 * beam that grazes it; TSourceGridOptions::freeMargin), >= 0,
+		 * default 0.1. */
+		double freeMargin = 0.1;
 		/** `fusionRule`: Conjunctive (default), Dempster, Yager, DuboisPrade
 		 * or Cautious. */
 		FusionRule fusionRule = FusionRule::Conjunctive;

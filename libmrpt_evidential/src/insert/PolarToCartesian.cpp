@@ -22,6 +22,51 @@ std::optional<PlanarSensorPose> planarSensorPose(
 
 namespace
 {
+/** Sectors on either side whose nearest impacts give the slope of the
+ * surface a sector's nearest impact lies on: one sector apart, range noise
+ * makes a head-on wall look oblique. */
+constexpr long kIncidenceSpan = 2;
+/** The free margin along a beam is at most this many times `freeMargin`:
+ * past 70 degrees of incidence (and at a depth edge, where the slope is no
+ * surface) it stops growing. */
+constexpr double kMaxMarginStretch = 3.0;
+
+/** The free margin along sector s's beam, given each sector's nearest
+ * impact (`nearest`, +inf without one): `margin` across the surface that
+ * impact lies on. A beam that meets a wall at incidence a crosses a band
+ * of depth d in front of it over d / cos(a), so a margin measured along the
+ * beam would protect a grazed wall by only its cosine. The surface's slope
+ * is taken on the flatter side (the nearest impacts kIncidenceSpan sectors
+ * away), so that a wall's end beside a depth edge keeps the wall's own
+ * slope. A beam without return (an impact at infinity) hit no surface. */
+double marginAlongBeam(
+	const std::vector<double>& nearest, bool fullTurn, double spacing, double margin,
+	std::size_t s)
+{
+	const auto n = static_cast<long>(nearest.size());
+	const auto rangeOf = [&](long t) {
+		if (t < 0 || t >= n)
+		{
+			if (!fullTurn) return HUGE_VAL;
+			t = (t + n) % n;
+		}
+		return nearest[static_cast<std::size_t>(t)];
+	};
+	const double r = nearest[s];
+	if (margin == 0.0 || !(r > 0.0 && r < HUGE_VAL)) return margin;
+	// tan(incidence) = (dr / dtheta) / r, on the side of the smaller dr.
+	double dr = HUGE_VAL;
+	for (const long side : {-kIncidenceSpan, kIncidenceSpan})
+		if (const double other = rangeOf(static_cast<long>(s) + side); other < HUGE_VAL)
+			dr = std::min(dr, std::abs(other - r));
+	if (dr == HUGE_VAL) return margin;
+	const double arc = r * static_cast<double>(kIncidenceSpan) * spacing;
+	const double tan2 = (dr * dr) / (arc * arc);
+	return tan2 >= kMaxMarginStretch * kMaxMarginStretch - 1.0
+		? margin * kMaxMarginStretch
+		: margin * std::sqrt(1.0 + tan2);
+}
+
 /** Builds the outline of a region made of one radius per gap between sector
  * centres (and per half sector at the ends of a scan that is not a full
  * turn): radiusOf(lo, hi) for the gap between sectors lo and hi. Arcs become
@@ -159,20 +204,24 @@ void CPolarToCartesian::setup(
 		setDirection(n + 1, polar.sectorAngle(n - 1) + 0.5 * spacing);
 
 	m_sectorSpans.resize(n);
+	m_nearest.resize(n);
+	for (std::size_t s = 0; s < n; ++s)
+		m_nearest[s] = polar.impacts(s).empty() ? HUGE_VAL : polar.impacts(s).front();
 	for (std::size_t s = 0; s < n; ++s)
 	{
 		const double reach = polar.transformBins(s) == 0
 			? 0.0
 			: (static_cast<double>(polar.transformBins(s)) + 0.5) * bin;
 		const double freeEnd = (static_cast<double>(polar.freeBins(s)) - 0.5) * bin;
-		const std::vector<double>& impacts = polar.impacts(s);
-		const double nearest = impacts.empty() ? HUGE_VAL : impacts.front();
+		const double nearest = m_nearest[s];
+		const double margin =
+			marginAlongBeam(m_nearest, polar.fullTurn(), spacing, polar.freeMargin(), s);
 		const double limit = nearest < static_cast<double>(polar.binCount()) * bin
-			? std::max(0.0, nearest - std::max(0.5 * bin, polar.freeMargin()))
+			? std::max(0.0, nearest - std::max(0.5 * bin, margin))
 			: HUGE_VAL;
 		m_sectorSpans[s] = {
 			reach * reach, polar.freeBins(s) == 0 ? -1.0 : freeEnd * freeEnd,
-			polar.freeMass(s), limit};
+			polar.freeMass(s), limit, margin};
 	}
 	// Between two sector centres the mix reaches as far as the longer
 	// sector; before the first and after the last centre, the sector alone.
@@ -215,8 +264,9 @@ void CPolarToCartesian::setup(
 	m_uniformMass = Mass::simpleFree(w);
 	// The uniform region stops short of the free margin; past it the mixed
 	// path cuts the free evidence at each sector's limit.
-	const auto marginBins = static_cast<std::size_t>(std::ceil(polar.freeMargin() / bin));
 	const auto uniformBins = [&](std::size_t s) {
+		const auto marginBins =
+			static_cast<std::size_t>(std::ceil(m_sectorSpans[s].margin / bin));
 		return polar.freeBins(s) > marginBins && polar.freeMass(s) == w
 			? polar.freeBins(s) - marginBins
 			: 0;

@@ -215,8 +215,13 @@ class CPolarToCartesian
 		 * evidence stops at the nearer one's limit (past it, where a wall is
 		 * oblique, lies the wall the nearer beam hit). */
 		double freeLimit;
+		/** The free margin along the sector's beam: freeMargin stretched by
+		 * the incidence on the surface its nearest impact lies on. */
+		double margin;
 	};
 	std::vector<SectorSpan> m_sectorSpans;
+	/** Each sector's nearest impact, +inf without one (setup()'s scratch). */
+	std::vector<double> m_nearest;
 	/** Outlines of the informed and of the uniform regions (x, y pairs), and
 	 * the world directions of their corners. */
 	std::vector<double> m_polygon, m_uniformPolygon, m_directions;

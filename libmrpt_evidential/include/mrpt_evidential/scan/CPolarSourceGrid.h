@@ -39,7 +39,10 @@ struct TSourceGridOptions
 	 * keep the model's masses; the transform onto the cells applies the
 	 * margin. Where the impact lies is uncertain by the error of the robot's
 	 * pose, and walls seen from elsewhere, with that error, lie there:
-	 * without a margin, rays that end just behind a wall cell erase it. */
+	 * without a margin, rays that end just behind a wall cell erase it.
+	 * The margin is that depth across the surface the sector's nearest
+	 * impact lies on: along a beam that meets it at incidence a, up to
+	 * three times longer (1 / cos a), so that grazed walls keep it too. */
 	double freeMargin = 0.0;
 
 	/** The first option out of range, the sensor model's first. */
