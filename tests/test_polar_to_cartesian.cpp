@@ -277,3 +277,29 @@ TEST(PolarToCartesian, FreeMarginHoldsAcrossAWallAtAnyIncidence)
 	}
 	EXPECT_GT(freeAt(3.0 - 1.5 * margin, 0.0), 0.5);
 }
+
+TEST(PolarToCartesian, FreeMarginHoldsWhatBeamsCrossedShortOfTheirImpact)
+{
+	// A wall 3 m ahead, head on, a margin of 0.2 m: between the free limit
+	// and a bin short of the impact the beams crossed the point but gave it
+	// no free evidence (the motion layer's test of an arrival that left);
+	// before the limit the point got free evidence, and within a bin of the
+	// impact it is the impact's.
+	TSourceGridOptions options;
+	options.sensorModel.model = SensorModel::MultiEcho;
+	options.binSize = 0.05;
+	options.maxRange = 20.0;
+	options.freeMargin = 0.2;
+	CPolarSourceGrid polar;
+	polar.build(
+		test::scanByAngle(
+			181, test::ScanSetup().aperture(M_PI / 2), [](double a) { return 3.0 / std::cos(a); }),
+		options);
+	CPolarToCartesian transform;
+	transform.setup(polar, PlanarSensorPose{0, 0, 0, false});
+	EXPECT_TRUE(transform.inFreeMargin(3.0 - 0.06, 0.0));
+	EXPECT_TRUE(transform.inFreeMargin(3.0 - 0.15, 0.0));
+	EXPECT_FALSE(transform.inFreeMargin(3.0 - 0.04, 0.0));
+	EXPECT_FALSE(transform.inFreeMargin(3.0 - 0.3, 0.0));
+	EXPECT_FALSE(transform.inFreeMargin(3.0 + 0.5, 0.0));  // behind the wall
+}

@@ -299,9 +299,10 @@ bool CPolarToCartesian::inFreeMargin(double x, double y) const
 	for (const std::size_t s : {ns.lo, ns.hi})
 	{
 		const std::vector<double>& impacts = m_polar->impacts(s);
-		// A cell and a half short of the impact: the cell that holds it, or
-		// one it straddles, is seen occupied, not crossed.
-		if (impacts.empty() || !(range < impacts.front() - 1.5 * m_polar->binSize()))
+		// A bin short of the impact the beam has crossed the point: a thing
+		// whose face stood there has moved back by a cell (the cell holding
+		// the impact is the one seen occupied).
+		if (impacts.empty() || !(range < impacts.front() - m_polar->binSize()))
 			return false;
 		withheld = withheld || range >= m_sectorSpans[s].freeLimit;
 	}

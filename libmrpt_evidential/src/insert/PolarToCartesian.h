@@ -116,8 +116,9 @@ class CPolarToCartesian
 	}
 
 	/** True when world point (x, y) lies in a sector's span between its free
-	 * limit and a bin and a half short of its nearest impact: a beam crossed
-	 * it, but the free margin kept its free evidence from the cells. */
+	 * limit and a bin short of its nearest impact (in both sectors around
+	 * it): a beam crossed it, but the free margin kept its free evidence
+	 * from the cells. */
 	bool inFreeMargin(double x, double y) const;
 
 	/** The free mass every cell of the uniform region receives. */
