@@ -18,6 +18,7 @@
 
 #include "../tests/support/clouds.h"
 #include "cloud/CloudSectors.h"
+#include "TransformLoop.h"
 
 using mrpt::poses::CPose3D;
 using namespace mrpt_evidential;
@@ -81,7 +82,8 @@ struct TCloudInput
 
 /** The cloud as a user would flatten it for a 2-D grid: per 0.2-degree
  * bearing, the nearest obstacle point, its ground removed as our map does. */
-mrpt::obs::CObservation2DRangeScan flatten(const mrpt::obs::CObservationPointCloud& c)
+/** A cloud's points in the robot's frame (its sensor pose applied). */
+std::vector<mrpt::math::TPoint3Df> worldPoints(const mrpt::obs::CObservationPointCloud& c)
 {
 	std::vector<mrpt::math::TPoint3Df> points;
 	for (std::size_t i = 0; i < c.pointcloud->size(); ++i)
@@ -92,6 +94,12 @@ mrpt::obs::CObservation2DRangeScan flatten(const mrpt::obs::CObservationPointClo
 		c.sensorPose.composePoint(px, py, pz, x, y, z);
 		points.emplace_back(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
 	}
+	return points;
+}
+
+mrpt::obs::CObservation2DRangeScan flatten(const mrpt::obs::CObservationPointCloud& c)
+{
+	const std::vector<mrpt::math::TPoint3Df> points = worldPoints(c);
 	TCloudRules rules;
 	rules.sectorWidth = 2 * M_PI / kFlatBeams;
 	TCloudReturns returns;
@@ -185,6 +193,23 @@ void theirs(benchmark::State& state, bool real, Motion motion, double res)
 	loop(state, map, in.flattened, in);
 }
 
+/** The transform alone of the first cloud of a case, placed at the origin
+ * (as the 2-D `ours/polar2cart` cases). */
+void oursTransform(benchmark::State& state, bool real, Motion motion, double res)
+{
+	const auto& cloud = *input(real, motion).clouds.front();
+	TCloudRules rules;
+	rules.sectorWidth = kDefaultCloudSectorWidth;
+	TCloudReturns returns;
+	sortCloudIntoSectors(worldPoints(cloud), cloud.sensorPose.translation(), CPose3D(), rules, returns);
+	CEvidentialGridMap2D::TInsertionOptions io;
+	io.maxRange = kMaxRange;
+	CPolarSourceGrid polar;
+	polar.build(returns, io.sourceGridOptions(res));
+	transformLoop(
+		state, polar, {cloud.sensorPose.x(), cloud.sensorPose.y(), 0.0, false}, kHalfSize, res);
+}
+
 std::string label(bool real, Motion motion, double res)
 {
 	char s[64];
@@ -204,6 +229,10 @@ void registerCloudCases()
 						[=](benchmark::State& s) { ours(s, real, motion, res); }, false);
 				addCase("mrpt/flattened/widening/" + at,
 						[=](benchmark::State& s) { theirs(s, real, motion, res); }, false);
+				if (motion == Motion::Static)
+					addCase("ours/cloudpolar2cart/" + at,
+							[=](benchmark::State& s) { oursTransform(s, real, motion, res); },
+							false);
 			}
 }
 

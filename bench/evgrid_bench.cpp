@@ -22,6 +22,7 @@
 
 #include "../tests/support/scans.h"
 #include "CloudCases.h"
+#include "TransformLoop.h"
 
 #include <cmath>
 #include <cstdio>
@@ -334,27 +335,7 @@ void ourPolarToCartesian(benchmark::State& state, ScanKind kind, double res)
 {
 	CPolarSourceGrid polar;
 	polar.build(scans(kind).front(), sourceOptions(kind, res));
-	const double h = halfSizeOf(kind);
-	EvidentialGridStorage grid;
-	grid.reset(-h, h, -h, h, res, 100'000'000);
-	const PlanarSensorPose sensor{0.3, -0.2, 0.4, false};
-	CPolarToCartesian transform;
-	// Sums that cost next to nothing: an integer count for the uniform
-	// cells (a chain of double additions would cost more than the visit).
-	double mixedSink = 0.0;
-	std::size_t uniformSink = 0;
-	for (auto _ : state)
-	{
-		transform.setup(polar, sensor);
-		transform.forEachInformedCell(
-			grid.geometry(),
-			[&mixedSink](std::size_t, const Mass& m) { mixedSink += m.free; },
-			[&uniformSink](std::size_t first, std::size_t count) {
-				for (std::size_t idx = first; idx < first + count; ++idx) uniformSink += idx;
-			});
-		benchmark::DoNotOptimize(mixedSink);
-		benchmark::DoNotOptimize(uniformSink);
-	}
+	bench::transformLoop(state, polar, {0.3, -0.2, 0.4, false}, halfSizeOf(kind), res);
 }
 
 // ---------------------------------------------------------------------------

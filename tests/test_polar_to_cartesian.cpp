@@ -94,18 +94,14 @@ Mass referenceMix(
 		touchesImpact |= p.occupied > 0;
 	}
 	// Free evidence stops at the nearer sector's nearest impact, less half a
-	// bin or the sector's free margin; a sector of no weight (a cell on the other
-	// one's centre line) does not count.
+	// bin or the sector's free margin.
 	const auto limit = [&](std::size_t s) {
 		const auto& impacts = polar.impacts(s);
 		if (impacts.empty() || !(impacts.front() < nBins * polar.binSize()))
 			return HUGE_VAL;
 		return std::max(0.0, impacts.front() - std::max(0.5 * polar.binSize(), referenceMargin(polar, s)));
 	};
-	const double lim = ws < 1e-6 ? limit(s0)
-		: ws > 1 - 1e-6          ? limit(s1)
-								 : std::min(limit(s0), limit(s1));
-	if (r >= lim) touchesImpact = true;
+	if (r >= std::min(limit(s0), limit(s1))) touchesImpact = true;
 	// Within a hair of a centre line (the transform's angles are within
 	// 2e-6 rad) the neighbour of almost no weight may be either side's.
 	if (onCentreLine) *onCentreLine = std::min(ws, 1 - ws) < 1e-3;
@@ -130,6 +126,81 @@ CObservation2DRangeScan randomScan(std::mt19937& rng, std::size_t beams, double 
 	}
 	return test::scanFromRanges(
 		ranges, valid, test::ScanSetup().aperture(aperture).rightToLeft(rightToLeft));
+}
+
+/** What a transform visited: cells in all, and those of the uniform path. */
+struct TVisitCounts
+{
+	std::size_t visited = 0, uniform = 0;
+};
+
+/** Visits the cells of a grid of 16 x 16 m at 0.05 m with `transform` (set up
+ * for `polar` at `sensor`) and checks each cell against referenceMix(): every
+ * cell with evidence visited once, with its mix, and no other. */
+void expectMatchesReference(
+	const CPolarSourceGrid& polar, const PlanarSensorPose& sensor,
+	CPolarToCartesian& transform, TVisitCounts& counts)
+{
+	EvidentialGridStorage grid;
+	grid.reset(-8, 8, -8, 8, 0.05, 1'000'000);
+	const GridGeometry& g = grid.geometry();
+	std::map<std::size_t, Mass> seen;
+	std::size_t& uniform = counts.uniform;
+	transform.forEachInformedCell(
+		g,
+		[&](std::size_t idx, const Mass& m) {
+			ASSERT_TRUE(seen.emplace(idx, m).second) << "visited twice";
+		},
+		[&](std::size_t first, std::size_t count) {
+			ASSERT_GT(count, 0u);
+			for (std::size_t idx = first; idx < first + count; ++idx)
+			{
+				ASSERT_TRUE(seen.emplace(idx, transform.uniformMass()).second)
+					<< "visited twice";
+				++uniform;
+			}
+		});
+
+	std::size_t informed = 0;
+	for (int cy = 0; cy < g.sizeY; ++cy)
+		for (int cx = 0; cx < g.sizeX; ++cx)
+		{
+			const double dx = g.cellCenterX(cx) - sensor.x;
+			const double dy = g.cellCenterY(cy) - sensor.y;
+			const double lx = std::cos(sensor.yaw) * dx + std::sin(sensor.yaw) * dy;
+			double ly = -std::sin(sensor.yaw) * dx + std::cos(sensor.yaw) * dy;
+			if (sensor.mirrored) ly = -ly;
+			bool onCentreLine = false;
+			const Mass expected = referenceMix(polar, lx, ly, &onCentreLine);
+			const auto it = seen.find(g.index(cx, cy));
+			// fastAtan2 is within 2e-6 rad: cells on an edge of the
+			// field of view or of reach may fall either way, with a
+			// mix too small to matter.
+			// On a sector's centre line, the free limit of the
+			// neighbour across it may count or not: only the masses
+			// other than free are checked there.
+			if (onCentreLine)
+			{
+				if (it != seen.end())
+				{
+					++informed;
+					ASSERT_NEAR(it->second.occupied, expected.occupied, 1e-3);
+				}
+				continue;
+			}
+			if (it == seen.end())
+			{
+				ASSERT_GT(expected.unknown, 1 - 1e-3)
+					<< "missed cell (" << cx << ", " << cy << ") " << expected;
+				continue;
+			}
+			++informed;
+			ASSERT_TRUE(test::massNear(it->second, expected, 1e-3))
+				<< "cell (" << cx << ", " << cy << ") uniform "
+				<< (it->second == transform.uniformMass());
+		}
+	EXPECT_EQ(informed, seen.size());
+	counts.visited = seen.size();
 }
 }  // namespace
 
@@ -167,73 +238,56 @@ TEST(PolarToCartesian, VisitsExactlyTheInformedCellsWithTheirMix)
 			const PlanarSensorPose sensor{
 				-1 + 2 * u(rng), -1 + 2 * u(rng), -M_PI + 2 * M_PI * u(rng),
 				trial == 3};
-			EvidentialGridStorage grid;
-			grid.reset(-8, 8, -8, 8, 0.05, 1'000'000);
-			const GridGeometry& g = grid.geometry();
 			transform.setup(polar, sensor);
-
-			std::map<std::size_t, Mass> seen;
-			std::size_t uniform = 0;
-			transform.forEachInformedCell(
-				g,
-				[&](std::size_t idx, const Mass& m) {
-					ASSERT_TRUE(seen.emplace(idx, m).second) << "visited twice";
-				},
-				[&](std::size_t first, std::size_t count) {
-					ASSERT_GT(count, 0u);
-					for (std::size_t idx = first; idx < first + count; ++idx)
-					{
-						ASSERT_TRUE(seen.emplace(idx, transform.uniformMass()).second)
-							<< "visited twice";
-						++uniform;
-					}
-				});
-
-			std::size_t informed = 0;
-			for (int cy = 0; cy < g.sizeY; ++cy)
-				for (int cx = 0; cx < g.sizeX; ++cx)
-				{
-					const double dx = g.cellCenterX(cx) - sensor.x;
-					const double dy = g.cellCenterY(cy) - sensor.y;
-					const double lx = std::cos(sensor.yaw) * dx + std::sin(sensor.yaw) * dy;
-					double ly = -std::sin(sensor.yaw) * dx + std::cos(sensor.yaw) * dy;
-					if (sensor.mirrored) ly = -ly;
-					bool onCentreLine = false;
-					const Mass expected = referenceMix(polar, lx, ly, &onCentreLine);
-					const auto it = seen.find(g.index(cx, cy));
-					// fastAtan2 is within 2e-6 rad: cells on an edge of the
-					// field of view or of reach may fall either way, with a
-					// mix too small to matter.
-					// On a sector's centre line, the free limit of the
-					// neighbour across it may count or not: only the masses
-					// other than free are checked there.
-					if (onCentreLine)
-					{
-						if (it != seen.end())
-						{
-							++informed;
-							ASSERT_NEAR(it->second.occupied, expected.occupied, 1e-3);
-						}
-						continue;
-					}
-					if (it == seen.end())
-					{
-						ASSERT_GT(expected.unknown, 1 - 1e-3)
-							<< "missed cell (" << cx << ", " << cy << ") " << expected;
-						continue;
-					}
-					++informed;
-					ASSERT_TRUE(test::massNear(it->second, expected, 1e-3))
-						<< "cell (" << cx << ", " << cy << ") case " << c.beams << " trial " << trial << " uniform " << (it->second == transform.uniformMass());
-				}
-			EXPECT_EQ(informed, seen.size());
+			SCOPED_TRACE(testing::Message() << c.beams << " beams, trial " << trial);
+			TVisitCounts counts;
+			expectMatchesReference(polar, sensor, transform, counts);
 			// One beam per sector: most sectors share the free mass muF, so
 			// the bulk of the cells take the uniform path.
 			if (c.beams > 100 && c.sectorWidth == 0)
 			{
-				EXPECT_GT(uniform, seen.size() / 3) << "the uniform region is used";
+				EXPECT_GT(counts.uniform, counts.visited / 3) << "the uniform region is used";
 			}
 		}
+}
+
+TEST(PolarToCartesian, LeavesOutOnlyVacuousCellsBetweenNearAndFarSectors)
+{
+	// Poles close by before an open street, one beam in two: between each
+	// pole's sector and the far one beside it lies a band the transform
+	// leaves out without looking at its cells. The cells it does visit, and
+	// those it leaves out, must be what the definition gives.
+	std::mt19937 rng(7);
+	std::uniform_real_distribution<double> u(0.0, 1.0);
+	CPolarToCartesian transform;
+	CPolarSourceGrid polar;
+	for (int trial = 0; trial < 4; ++trial)
+	{
+		std::vector<float> ranges;
+		std::vector<bool> valid;
+		for (std::size_t i = 0; i < 720; ++i)
+		{
+			ranges.push_back(static_cast<float>(i % 2 == 0 ? 0.8 + u(rng) : 4.5 + u(rng)));
+			valid.push_back(u(rng) > 0.03);
+		}
+		TSourceGridOptions options;
+		options.sensorModel.model =
+			trial % 2 == 0 ? SensorModel::ReinforcedMultiEcho : SensorModel::ImpreciseMultiEcho;
+		options.sensorModel.imprecision = 0.1;
+		options.binSize = 0.05;
+		options.maxRange = 6.0;
+		options.freeMargin = trial >= 2 ? 0.1 : 0.0;
+		polar.build(
+			test::scanFromRanges(ranges, valid, test::ScanSetup().aperture(2 * M_PI)),
+			options);
+		const PlanarSensorPose sensor{
+			-1 + 2 * u(rng), -1 + 2 * u(rng), -M_PI + 2 * M_PI * u(rng), trial == 3};
+		transform.setup(polar, sensor);
+		SCOPED_TRACE(testing::Message() << "trial " << trial);
+		TVisitCounts counts;
+		expectMatchesReference(polar, sensor, transform, counts);
+		EXPECT_TRUE(transform.leavesOutVacuousBands()) << "the bands are in use";
+	}
 }
 
 TEST(PolarToCartesian, FreeMarginHoldsAcrossAWallAtAnyIncidence)

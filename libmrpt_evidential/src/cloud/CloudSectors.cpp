@@ -20,6 +20,7 @@ TCloudCounts sortCloudIntoSectors(
 		std::max(1L, std::lround(2 * M_PI / rules.sectorWidth)));
 	out.reset(sectors);
 	const double spacing = 2 * M_PI / static_cast<double>(sectors);
+	const double perRadian = 1.0 / spacing;
 
 	TGroundPlane ground;  // the robot's base plane
 	if (rules.groundRemoval == GroundRemoval::Plane)
@@ -60,9 +61,11 @@ TCloudCounts sortCloudIntoSectors(
 		// No hypot: its care for overflow costs more than the rest of the loop.
 		const double range = std::sqrt(dx * dx + dy * dy);
 		// Nearest sector centre; the last one wraps to the first. A point
-		// within 2e-6 rad of two sectors' border may go to either.
+		// within 2e-6 rad of two sectors' border may go to either. The
+		// position is >= 0 (to fastAtan2's error): adding a half and
+		// truncating rounds it, without a call to lround for each point.
 		const auto s =
-			static_cast<std::size_t>(std::lround((detail::fastAtan2(dy, dx) + M_PI) / spacing)) %
+			static_cast<std::size_t>((detail::fastAtan2(dy, dx) + M_PI) * perRadian + 0.5) %
 			sectors;
 		if (obstacle)
 		{

@@ -3,6 +3,8 @@
 #include <mrpt/poses/CPose3D.h>
 #include "insert/PolarToCartesian.h"
 
+#include <tuple>
+
 namespace mrpt_evidential
 {
 std::optional<PlanarSensorPose> planarSensorPose(
@@ -30,6 +32,20 @@ constexpr long kIncidenceSpan = 2;
  * past 70 degrees of incidence (and at a depth edge, where the slope is no
  * surface) it stops growing. */
 constexpr double kMaxMarginStretch = 3.0;
+/** The vacuous bands are outlined and left out of the visit when they hold
+ * at least this many cells: about what their four outlines and spans cost
+ * against finding each of their cells vacuous one by one. */
+constexpr double kMinVacuousCells = 10000.0;
+/** Radians: the transform's angles (fastAtan2) are within 2e-6 rad, so a
+ * cell this close to a centre line may be mixed as the next gap's, where the
+ * free limit can differ; a band leaves such cells to the visit. */
+constexpr double kCentreLineSlack = 1e-5;
+
+/** No flanks: see outline(). */
+struct TNoFlanks
+{
+	double operator()(std::size_t, std::size_t) const { return 0.0; }
+};
 
 /** The free margin along sector s's beam, given each sector's nearest
  * impact (`nearest`, +inf without one): `margin` across the surface that
@@ -74,12 +90,14 @@ double marginAlongBeam(
  * `outside` (an outline that must hold the region; otherwise it must stay
  * inside it); a radius of 0 puts the sensor itself in the outline.
  * `directions` holds the world unit vectors of the gaps' ends (x, y pairs):
- * the start of sector 0's span, every centre, the end of the last span. */
-template <typename RadiusOf>
+ * the start of sector 0's span, every centre, the end of the last span.
+ * flankOf(lo, hi) > 0 also puts in the region, out to that radius, the
+ * strips of kCentreLineSlack along the gap's two ends. */
+template <typename RadiusOf, typename FlankOf = TNoFlanks>
 void outline(
 	std::vector<double>& polygon, Box* box, const CPolarSourceGrid& polar,
 	const PlanarSensorPose& sensor, const std::vector<double>& directions,
-	bool outside, RadiusOf radiusOf)
+	bool outside, RadiusOf radiusOf, FlankOf flankOf = {})
 {
 	polygon.clear();
 	const auto addPoint = [&](double x, double y) {
@@ -95,68 +113,67 @@ void outline(
 	// every arc is one sector wide: its chords are worked out once.
 	double lastWidth = -1.0, step = 0.0, pushOut = 1.0;
 	int pieces = 1;
-	const auto addArc = [&](double radius, std::size_t i, std::size_t j,
-							double width) {
+	const auto turned = [&](double cx, double cy, double angle) {
+		const double c = std::cos(dir * angle), s = std::sin(dir * angle);
+		return std::pair<double, double>{c * cx - s * cy, s * cx + c * cy};
+	};
+	const auto addArc = [&](double radius, double flank, std::size_t i,
+							std::size_t j, double width) {
+		double cx = directions[2 * i], cy = directions[2 * i + 1];
+		double ex = directions[2 * j], ey = directions[2 * j + 1];
+		if (flank > 0.0)
+		{
+			// Out to the flank along the start, across the strip, and the
+			// arc between the strips; the same back at the end.
+			addPoint(sensor.x + flank * cx, sensor.y + flank * cy);
+			std::tie(cx, cy) = turned(cx, cy, kCentreLineSlack);
+			std::tie(ex, ey) = turned(ex, ey, -kCentreLineSlack);
+			addPoint(sensor.x + flank * cx, sensor.y + flank * cy);
+			width -= 2 * kCentreLineSlack;
+		}
 		if (radius <= 0.0)
-		{
 			addPoint(sensor.x, sensor.y);
-			return;
-		}
-		if (width != lastWidth)
+		else
 		{
-			lastWidth = width;
-			pieces = std::max(1, static_cast<int>(std::ceil(width / (M_PI / 8))));
-			step = width / pieces;
-			pushOut = outside ? 1.0 / std::cos(0.5 * step) : 1.0;
+			if (width != lastWidth)
+			{
+				lastWidth = width;
+				pieces = std::max(1, static_cast<int>(std::ceil(width / (M_PI / 8))));
+				step = width / pieces;
+				pushOut = outside ? 1.0 / std::cos(0.5 * step) : 1.0;
+			}
+			const double rho = radius * pushOut;
+			addPoint(sensor.x + rho * cx, sensor.y + rho * cy);
+			for (int k = 1; k < pieces; ++k)
+			{
+				// Wide arcs only: turn the start direction by k steps.
+				const auto [x, y] = turned(cx, cy, k * step);
+				addPoint(sensor.x + rho * x, sensor.y + rho * y);
+			}
+			addPoint(sensor.x + rho * ex, sensor.y + rho * ey);
 		}
-		const double rho = radius * pushOut;
-		const double cx = directions[2 * i], cy = directions[2 * i + 1];
-		addPoint(sensor.x + rho * cx, sensor.y + rho * cy);
-		for (int k = 1; k < pieces; ++k)
+		if (flank > 0.0)
 		{
-			// Wide arcs only: turn the start direction by k steps.
-			const double c = std::cos(dir * k * step), s = std::sin(dir * k * step);
+			addPoint(sensor.x + flank * ex, sensor.y + flank * ey);
 			addPoint(
-				sensor.x + rho * (c * cx - s * cy), sensor.y + rho * (s * cx + c * cy));
+				sensor.x + flank * directions[2 * j], sensor.y + flank * directions[2 * j + 1]);
 		}
-		addPoint(
-			sensor.x + rho * directions[2 * j], sensor.y + rho * directions[2 * j + 1]);
+	};
+	const auto gap = [&](std::size_t lo, std::size_t hi, std::size_t i, double width) {
+		addArc(radiusOf(lo, hi), flankOf(lo, hi), i, i + 1, width);
 	};
 	const std::size_t n = polar.sectorCount();
 	const double spacing = polar.sectorSpacing();
 	if (!polar.fullTurn())
 	{
 		addPoint(sensor.x, sensor.y);
-		addArc(radiusOf(0, 0), 0, 1, 0.5 * spacing);
+		gap(0, 0, 0, 0.5 * spacing);
 	}
 	// Gap g lies between centres g and g + 1 (g + 1 wraps to 0 for the last
 	// gap of a full turn); direction entry c + 1 is centre c.
 	const std::size_t gaps = polar.fullTurn() ? n : n - 1;
-	for (std::size_t g = 0; g < gaps; ++g)
-		addArc(radiusOf(g, (g + 1) % n), g + 1, g + 2, spacing);
-	if (!polar.fullTurn())
-		addArc(radiusOf(n - 1, n - 1), n, n + 1, 0.5 * spacing);
-}
-/** Sorts a row's crossings. They arrive in the outline's order, which for an
- * outline around the sensor is nearly sorted, forwards or backwards along
- * the row: reversed when backwards, insertion sorts them in a few steps
- * (std::sort moves them with a library call per element). */
-void sortCrossings(double* first, double* last)
-{
-	if (last - first < 2) return;  // an empty row may come as two null pointers
-	if (last - first > 64)
-	{
-		std::sort(first, last);
-		return;
-	}
-	if (*first > *(last - 1)) std::reverse(first, last);
-	for (double* i = first + 1; i < last; ++i)
-	{
-		const double x = *i;
-		double* j = i;
-		for (; j > first && *(j - 1) > x; --j) *j = *(j - 1);
-		*j = x;
-	}
+	for (std::size_t g = 0; g < gaps; ++g) gap(g, (g + 1) % n, g + 1, spacing);
+	if (!polar.fullTurn()) gap(n - 1, n - 1, n, 0.5 * spacing);
 }
 }  // namespace
 
@@ -166,6 +183,7 @@ void CPolarToCartesian::setup(
 	m_polar = &polar;
 	m_sensor = sensor;
 	m_box = Box{};
+	m_vacuousArea = 0.0;
 	m_polygon.clear();
 	m_uniformPolygon.clear();
 	const std::size_t n = polar.sectorCount();
@@ -230,6 +248,19 @@ void CPolarToCartesian::setup(
 		[&](std::size_t lo, std::size_t hi) {
 			return std::sqrt(std::max(m_sectorSpans[lo].reach2, m_sectorSpans[hi].reach2));
 		});
+	// The vacuous bands: between a sector whose impact is near and one that
+	// reaches far (a pole, a car's edge, a tree before an open street), the
+	// gap holds nothing from the nearer one's free limit to the farther one's
+	// impacts.
+	const auto addBand = [&](std::size_t lo, std::size_t hi, double width) {
+		const VacuousBand band = vacuousBand(lo, hi);
+		m_vacuousArea += 0.5 * width * (band.to2 - band.from2);
+	};
+	if (!polar.fullTurn()) addBand(0, 0, 0.5 * spacing);
+	for (std::size_t g = 0; g < (polar.fullTurn() ? n : n - 1); ++g)
+		addBand(g, (g + 1) % n, spacing);
+	if (!polar.fullTurn()) addBand(n - 1, n - 1, 0.5 * spacing);
+
 	// A cloud's farther impacts lie beyond the polygon; the grid must grow
 	// to hold them all the same.
 	for (std::size_t s = 0; s < n; ++s)
@@ -263,20 +294,52 @@ void CPolarToCartesian::setup(
 	const double w = best->first;
 	m_uniformMass = Mass::simpleFree(w);
 	// The uniform region stops short of the free margin; past it the mixed
-	// path cuts the free evidence at each sector's limit.
-	const auto uniformBins = [&](std::size_t s) {
+	// path cuts the free evidence at each sector's limit. Worked out once
+	// per sector: each sector bounds the two gaps beside it.
+	m_uniformBins.resize(n);
+	for (std::size_t s = 0; s < n; ++s)
+	{
 		const auto marginBins =
 			static_cast<std::size_t>(std::ceil(m_sectorSpans[s].margin / bin));
-		return polar.freeBins(s) > marginBins && polar.freeMass(s) == w
+		m_uniformBins[s] = polar.freeBins(s) > marginBins && polar.freeMass(s) == w
 			? polar.freeBins(s) - marginBins
 			: 0;
-	};
+	}
 	outline(
 		m_uniformPolygon, nullptr, polar, sensor, m_directions, false,
 		[&](std::size_t lo, std::size_t hi) {
-			const std::size_t bins = std::min(uniformBins(lo), uniformBins(hi));
+			const std::size_t bins = std::min(m_uniformBins[lo], m_uniformBins[hi]);
 			return bins == 0 ? 0.0 : (static_cast<double>(bins) - 0.5) * bin;
 		});
+}
+
+CPolarToCartesian::VacuousBand CPolarToCartesian::vacuousBand(
+	std::size_t lo, std::size_t hi) const
+{
+	// mixAt() finds a cell vacuous past the nearer free limit where each
+	// sector is within its free run or past its reach: the gap's ranges from
+	// that limit on, less each sector's zone [free run's end, reach). The
+	// longest piece is the band.
+	const SectorSpan &a = m_sectorSpans[lo], &b = m_sectorSpans[hi];
+	const double limit = std::min(a.freeLimit, b.freeLimit);
+	if (!(limit < HUGE_VAL)) return {};
+	const double end2 = std::max(a.reach2, b.reach2);
+	std::pair<double, double> zones[2] = {
+		{std::max(a.freeEnd2, 0.0), a.reach2}, {std::max(b.freeEnd2, 0.0), b.reach2}};
+	if (zones[1].first < zones[0].first) std::swap(zones[0], zones[1]);
+	VacuousBand best;
+	const auto consider = [&](double from2, double to2) {
+		if (to2 - from2 > best.to2 - best.from2) best = {from2, to2};
+	};
+	double at = limit * limit;
+	for (const auto& [from2, to2] : zones)
+	{
+		if (!(from2 < to2)) continue;
+		if (from2 > at) consider(at, std::min(from2, end2));
+		at = std::max(at, to2);
+	}
+	if (at < end2) consider(at, end2);
+	return best;
 }
 
 bool CPolarToCartesian::inFreeMargin(double x, double y) const
@@ -286,8 +349,8 @@ bool CPolarToCartesian::inFreeMargin(double x, double y) const
 	// sensor's past arrivals, found without the polar conversion.
 	if (!(x >= m_box.xMin && x <= m_box.xMax && y >= m_box.yMin && y <= m_box.yMax))
 		return false;
-	double angle, range2;
-	polarOfCells(x - m_sensor.x, y - m_sensor.y, 0.0, 1, &angle, &range2);
+	const double dx = x - m_sensor.x, dy = y - m_sensor.y;
+	const double angle = angleFrom(dx, dy), range2 = dx * dx + dy * dy;
 	if (angle >= m_span) return false;
 	// Both sectors around the point, as the bilinear mix takes them: a beam
 	// that passes beside a thing standing in part of the cell is not a
@@ -312,6 +375,7 @@ bool CPolarToCartesian::inFreeMargin(double x, double y) const
 CPolarToCartesian::TRows CPolarToCartesian::prepareRows(const GridGeometry& grid)
 {
 	m_rows = TRows();
+	m_skipsVacuous = false;
 	if (!m_polar || m_box.empty()) return m_rows;
 	const double res = grid.resolution;
 	const int first = detail::clampToInt(
@@ -321,79 +385,42 @@ CPolarToCartesian::TRows CPolarToCartesian::prepareRows(const GridGeometry& grid
 	if (first > last) return m_rows;
 	m_spans.fill(m_polygon, grid, first, last);
 	m_uniformSpans.fill(m_uniformPolygon, grid, first, last);
+	m_skipsVacuous = m_vacuousArea >= kMinVacuousCells * res * res &&
+		m_polar->sectorSpacing() > 4 * kCentreLineSlack;
+	if (m_skipsVacuous)
+	{
+		// The bands as the region inside their far ends (an outline that
+		// stays inside the arcs) and outside their near ends (one that holds
+		// them): only cells surely within a band are left out. A gap without
+		// a band takes one radius in both, its free limit (or its reach): the
+		// outlines' corners then stay near the bands' near ends, instead of
+		// running to the sensor and crossing every row near it.
+		const auto bandEnd = [this](bool far) {
+			return [this, far](std::size_t lo, std::size_t hi) {
+				const VacuousBand band = vacuousBand(lo, hi);
+				if (band.to2 > band.from2) return std::sqrt(far ? band.to2 : band.from2);
+				const SectorSpan &a = m_sectorSpans[lo], &b = m_sectorSpans[hi];
+				const double limit = std::min(a.freeLimit, b.freeLimit);
+				return limit < HUGE_VAL ? limit : std::sqrt(std::max(a.reach2, b.reach2));
+			};
+		};
+		// The strips along the centre lines go to the visit: past each
+		// band's far end (and the outer outline's chords) in the inner one.
+		const auto strips = [this](std::size_t lo, std::size_t hi) {
+			const VacuousBand band = vacuousBand(lo, hi);
+			return band.to2 > band.from2 ? 1.001 * std::sqrt(band.to2) : 0.0;
+		};
+		outline(
+			m_vacuousOuter, nullptr, *m_polar, m_sensor, m_directions, false, bandEnd(true));
+		outline(
+			m_vacuousInner, nullptr, *m_polar, m_sensor, m_directions, true, bandEnd(false),
+			strips);
+		m_vacuousOuterSpans.fill(m_vacuousOuter, grid, first, last);
+		m_vacuousInnerSpans.fill(m_vacuousInner, grid, first, last);
+		m_vacuousSpans.assignDifference(m_vacuousOuterSpans, m_vacuousInnerSpans);
+	}
 	m_rows = {first, last};
 	return m_rows;
-}
-
-void CPolarToCartesian::RowSpans::fill(
-	const std::vector<double>& polygon, const GridGeometry& grid, int first,
-	int last)
-{
-	const double res = grid.resolution;
-	const std::size_t nRows = static_cast<std::size_t>(last - first + 1);
-	// Each edge crosses the centre lines y in [lower end, upper end): a vertex
-	// is counted once, so every row holds an even number of crossings. The
-	// edges that cross a row are listed once, then walked twice (count, fill).
-	const std::size_t nPoints = polygon.size() / 2;
-	const double invRes = 1.0 / res;
-	// The first row whose centre line lies at or above each corner.
-	vertexRow.resize(nPoints);
-	for (std::size_t i = 0; i < nPoints; ++i)
-		vertexRow[i] = detail::clampToInt(
-			std::ceil((polygon[2 * i + 1] - grid.yMin) * invRes - 0.5), first,
-			last + 1);
-	edges.clear();
-	for (std::size_t i = 0; i < nPoints; ++i)
-	{
-		const std::size_t j = i + 1 == nPoints ? 0 : i + 1;
-		if (vertexRow[i] == vertexRow[j]) continue;  // crosses no centre line
-		const std::size_t lo = vertexRow[i] < vertexRow[j] ? i : j;
-		const std::size_t hi = lo == i ? j : i;
-		const double x0 = polygon[2 * lo], y0 = polygon[2 * lo + 1];
-		const double slope = (polygon[2 * hi] - x0) / (polygon[2 * hi + 1] - y0);
-		const int r0 = vertexRow[lo];
-		edges.push_back(
-			{r0 - first, vertexRow[hi] - first,
-			 x0 + (grid.cellCenterY(r0) - y0) * slope, slope * res});
-	}
-	const auto forEachCrossing = [&](auto&& f) {
-		for (const Edge& e : edges)
-		{
-			double x = e.x;
-			for (int r = e.row0; r < e.row1; ++r, x += e.dxPerRow)
-				f(static_cast<std::size_t>(r), x);
-		}
-	};
-	start.assign(nRows + 1, 0);
-	forEachCrossing([&](std::size_t row, double) { ++start[row + 1]; });
-	for (std::size_t k = 0; k < nRows; ++k) start[k + 1] += start[k];
-	std::vector<double>& xs = crossingX;
-	xs.resize(start[nRows]);
-	cursor.assign(start.begin(), start.end() - 1);
-	forEachCrossing([&](std::size_t row, double x) { xs[cursor[row]++] = x; });
-
-	// Crossings to spans of columns whose centres lie between two of them;
-	// `start` is rewritten to index the spans.
-	columns.clear();
-	std::size_t from = 0;
-	for (std::size_t k = 0; k < nRows; ++k)
-	{
-		const std::size_t to = start[k + 1];
-		sortCrossings(xs.data() + from, xs.data() + to);
-		start[k] = columns.size();
-		for (std::size_t c = from; c + 1 < to; c += 2)
-		{
-			const int c0 = detail::clampToInt(
-				std::ceil((xs[c] - grid.xMin) * invRes - 0.5), 0, grid.sizeX);
-			const int c1 = detail::clampToInt(
-				std::floor((xs[c + 1] - grid.xMin) * invRes - 0.5), -1, grid.sizeX - 1);
-			if (c0 > c1) continue;
-			columns.push_back(c0);
-			columns.push_back(c1);
-		}
-		from = to;
-	}
-	start[nRows] = columns.size();
 }
 
 }  // namespace mrpt_evidential

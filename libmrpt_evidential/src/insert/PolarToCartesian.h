@@ -83,6 +83,28 @@ inline Neighbours neighbours(double position, std::size_t count, bool wraps)
 		static_cast<std::size_t>(lo), static_cast<std::size_t>(hi),
 		lo == hi ? 0.0 : w};
 }
+/** piece(from, to) for each run of columns [from, to] outside the spans
+ * spans[i], spans[i + 1], ... before `end` (sorted, disjoint pairs of first
+ * and last column), in order; i moves on past the spans left behind, so that
+ * the runs of one row can be taken in turn. */
+template <typename Piece>
+void forEachPieceOutside(
+	const std::vector<int>& spans, std::size_t& i, std::size_t end, int from, int to,
+	Piece&& piece)
+{
+	while (from <= to)
+	{
+		while (i < end && spans[i + 1] < from) i += 2;
+		if (i < end && spans[i] <= from)
+		{
+			from = spans[i + 1] + 1;
+			continue;
+		}
+		const int stop = i < end ? std::min(to, spans[i] - 1) : to;
+		piece(from, stop);
+		from = stop + 1;
+	}
+}
 }  // namespace detail
 
 /** Places a polar SourceGrid at a sensor pose and visits the grid cells it
@@ -120,6 +142,11 @@ class CPolarToCartesian
 	 * it): a beam crossed it, but the free margin kept its free evidence
 	 * from the cells. */
 	bool inFreeMargin(double x, double y) const;
+
+	/** True when the last prepareRows() outlined the vacuous bands between
+	 * near and far sectors, so that the visit leaves their cells out (a
+	 * scan whose bands hold enough cells to be worth it). */
+	bool leavesOutVacuousBands() const { return m_skipsVacuous; }
 
 	/** The free mass every cell of the uniform region receives. */
 	const Mass& uniformMass() const { return m_uniformMass; }
@@ -181,16 +208,30 @@ class CPolarToCartesian
 		void fill(
 			const std::vector<double>& polygon, const GridGeometry& grid,
 			int first, int last);
+		/** The spans, row by row, of the cells `outer`'s spans hold and
+		 * `inner`'s do not (both filled for the same rows). */
+		void assignDifference(const RowSpans& outer, const RowSpans& inner);
 	};
 
 	/** Cells handled per batch of the mixed path. */
 	static constexpr int kBatch = 64;
-	/** For `count` <= kBatch cells of a row, `dx0` + k res east and `dy`
-	 * north of the sensor: the angle from the start of sector 0's span in
-	 * [0, 2 pi), and the squared range. One loop without branches or library
-	 * calls: it vectorizes. */
+	/** The angle of a point `dx` east and `dy` north of the sensor, from
+	 * the start of sector 0's span, in [0, 2 pi). No branches or library
+	 * calls: a loop of it vectorizes. */
+	double angleFrom(double dx, double dy) const
+	{
+		const double twoPi = 2 * M_PI;
+		// m_yawOffset is in [0, 2 pi) and atan2 in [-pi, pi].
+		const double a = m_dir * (detail::fastAtan2(dy, dx) - m_yawOffset);
+		const double up = a + twoPi, upTwice = up + twoPi, down = a - twoPi;
+		return a < 0.0 ? (up < 0.0 ? upTwice : up) : (a >= twoPi ? down : a);
+	}
+	/** For `count` <= kBatch cells of a row from column `firstColumn`, `dy`
+	 * north of the sensor: angleFrom() and the squared range. Each cell's
+	 * offset is taken from its own column, so that a cell's mix does not
+	 * depend on where its batch starts. */
 	void polarOfCells(
-		double dx0, double dy, double res, int count, double* angle,
+		const GridGeometry& grid, int firstColumn, double dy, int count, double* angle,
 		double* range2) const;
 	/** The mix at a cell's polar coordinates (angle as polarOfCells() gives
 	 * it, squared range), or false when it is vacuous. */
@@ -221,33 +262,50 @@ class CPolarToCartesian
 		double margin;
 	};
 	std::vector<SectorSpan> m_sectorSpans;
-	/** Each sector's nearest impact, +inf without one (setup()'s scratch). */
+	/** The squared ranges [from, to) between two sectors within which every
+	 * cell is vacuous (free evidence stopped, neither sector's bins hold
+	 * anything but their free run or their vacuous tail there); from == to
+	 * when there are none. */
+	struct VacuousBand
+	{
+		double from2 = 0.0, to2 = 0.0;
+	};
+	VacuousBand vacuousBand(std::size_t lo, std::size_t hi) const;
+	/** The area of all the gaps' vacuous bands (m^2, set by setup()): when it
+	 * holds enough cells, prepareRows() outlines them and the visit leaves
+	 * them out. */
+	double m_vacuousArea = 0.0;
+	/** Each sector's nearest impact, +inf without one, and its bins in the
+	 * uniform region (setup()'s scratch). */
 	std::vector<double> m_nearest;
+	std::vector<std::size_t> m_uniformBins;
 	/** Outlines of the informed and of the uniform regions (x, y pairs), and
 	 * the world directions of their corners. */
 	std::vector<double> m_polygon, m_uniformPolygon, m_directions;
+	/** Outlines inside the vacuous bands' far ends and outside their near
+	 * ends (prepareRows()'s scratch). */
+	std::vector<double> m_vacuousOuter, m_vacuousInner;
 	Mass m_uniformMass;
 	/** Free masses of the sectors and how many sectors hold each (setup()'s
 	 * scratch, kept to reuse its storage). */
 	std::vector<std::pair<double, std::size_t>> m_freeMassVotes;
 	RowSpans m_spans, m_uniformSpans;
+	/** The vacuous bands' spans (outer less inner), when m_skipsVacuous. */
+	RowSpans m_vacuousOuterSpans, m_vacuousInnerSpans, m_vacuousSpans;
+	bool m_skipsVacuous = false;
 	/** Constants of mixAt(), set by setup(). */
 	double m_invSpacing = 0, m_span = 0, m_invBin = 0, m_dir = 1,
 		   m_yawOffset = 0;
 };
 
 inline void CPolarToCartesian::polarOfCells(
-	double dx0, double dy, double res, int count, double* angle,
+	const GridGeometry& grid, int firstColumn, double dy, int count, double* angle,
 	double* range2) const
 {
-	const double twoPi = 2 * M_PI, dir = m_dir, yawOffset = m_yawOffset;
 	for (int k = 0; k < count; ++k)
 	{
-		const double dx = dx0 + k * res;
-		// yawOffset is in [0, 2 pi) and atan2 in [-pi, pi].
-		const double a = dir * (detail::fastAtan2(dy, dx) - yawOffset);
-		const double up = a + twoPi, upTwice = up + twoPi, down = a - twoPi;
-		angle[k] = a < 0.0 ? (up < 0.0 ? upTwice : up) : (a >= twoPi ? down : a);
+		const double dx = grid.cellCenterX(firstColumn + k) - m_sensor.x;
+		angle[k] = angleFrom(dx, dy);
 		range2[k] = dx * dx + dy * dy;
 	}
 }
@@ -264,11 +322,10 @@ inline bool CPolarToCartesian::mixAt(
 	// Where each sector's two bins hold one constant mass (free run or
 	// vacuous tail: most cells between sectors of different lengths), the mix
 	// is along the angle only, with no range bins to look up.
-	// A sector of no weight (a cell on the other one's centre line) does
-	// not count.
-	const double limit = ns.wHi < 1e-6 ? lo.freeLimit
-		: ns.wHi > 1 - 1e-6            ? hi.freeLimit
-									   : std::min(lo.freeLimit, hi.freeLimit);
+	// Between two sectors free evidence stops at the nearer one's limit
+	// (even on a centre line, so that the cells prepareRows() leaves out as
+	// vacuous are exactly those found vacuous here).
+	const double limit = std::min(lo.freeLimit, hi.freeLimit);
 	const bool pastImpacts = range2 >= limit * limit;  // false for +inf
 	const bool loFree = range2 < lo.freeEnd2, hiFree = range2 < hi.freeEnd2;
 	if ((loFree || range2 >= lo.reach2) && (hiFree || range2 >= hi.reach2))
@@ -306,7 +363,6 @@ void CPolarToCartesian::visitRows(
 	VisitUniform&& visitUniform) const
 {
 	if (!m_polar || m_box.empty()) return;
-	const double res = grid.resolution;
 	Mass observed;
 	for (int cy = first; cy <= last; ++cy)
 	{
@@ -315,17 +371,22 @@ void CPolarToCartesian::visitRows(
 		const std::size_t rowIndex = grid.index(0, cy);
 		std::size_t u = m_uniformSpans.start[k];
 		const std::size_t uEnd = m_uniformSpans.start[k + 1];
+		std::size_t v = m_skipsVacuous ? m_vacuousSpans.start[k] : 0;
+		const std::size_t vEnd = m_skipsVacuous ? m_vacuousSpans.start[k + 1] : 0;
 		const auto mixed = [&](int from, int to) {
 			double angle[kBatch], range2[kBatch];
 			for (int cx = from; cx <= to; cx += kBatch)
 			{
 				const int count = std::min(kBatch, to - cx + 1);
-				polarOfCells(
-					grid.cellCenterX(cx) - m_sensor.x, dy, res, count, angle, range2);
+				polarOfCells(grid, cx, dy, count, angle, range2);
 				for (int k = 0; k < count; ++k)
 					if (mixAt(angle[k], range2[k], observed))
 						visitMixed(rowIndex + static_cast<std::size_t>(cx + k), observed);
 			}
+		};
+		// The mixed cells outside the vacuous bands.
+		const auto mixedOutsideBands = [&](int from, int to) {
+			detail::forEachPieceOutside(m_vacuousSpans.columns, v, vEnd, from, to, mixed);
 		};
 		for (std::size_t o = m_spans.start[k]; o < m_spans.start[k + 1]; o += 2)
 		{
@@ -348,7 +409,7 @@ void CPolarToCartesian::visitRows(
 					const int stop = u < uEnd
 						? std::min(end, m_uniformSpans.columns[u] - 1)
 						: end;
-					mixed(cx, stop);
+					mixedOutsideBands(cx, stop);
 					cx = stop + 1;
 				}
 			}

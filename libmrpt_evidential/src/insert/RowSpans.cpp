@@ -1,0 +1,128 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
+ * CPolarToCartesian::RowSpans: a polygon's cells, row by row, as spans of
+ * columns. */
+
+#include <algorithm>
+
+#include "insert/PolarToCartesian.h"
+
+namespace mrpt_evidential
+{
+namespace
+{
+/** Sorts a row's crossings. They arrive in the outline's order, which for an
+ * outline around the sensor is nearly sorted, forwards or backwards along
+ * the row: reversed when backwards, insertion sorts them in a few steps
+ * (std::sort moves them with a library call per element). */
+void sortCrossings(double* first, double* last)
+{
+	if (last - first < 2) return;  // an empty row may come as two null pointers
+	if (last - first > 64)
+	{
+		std::sort(first, last);
+		return;
+	}
+	if (*first > *(last - 1)) std::reverse(first, last);
+	for (double* i = first + 1; i < last; ++i)
+	{
+		const double x = *i;
+		double* j = i;
+		for (; j > first && *(j - 1) > x; --j) *j = *(j - 1);
+		*j = x;
+	}
+}
+}  // namespace
+
+void CPolarToCartesian::RowSpans::fill(
+	const std::vector<double>& polygon, const GridGeometry& grid, int first,
+	int last)
+{
+	const double res = grid.resolution;
+	const std::size_t nRows = static_cast<std::size_t>(last - first + 1);
+	// Each edge crosses the centre lines y in [lower end, upper end): a vertex
+	// is counted once, so every row holds an even number of crossings. The
+	// edges that cross a row are listed once, then walked twice (count, fill).
+	const std::size_t nPoints = polygon.size() / 2;
+	const double invRes = 1.0 / res;
+	// The first row whose centre line lies at or above each corner.
+	vertexRow.resize(nPoints);
+	for (std::size_t i = 0; i < nPoints; ++i)
+		vertexRow[i] = detail::clampToInt(
+			std::ceil((polygon[2 * i + 1] - grid.yMin) * invRes - 0.5), first,
+			last + 1);
+	edges.clear();
+	for (std::size_t i = 0; i < nPoints; ++i)
+	{
+		const std::size_t j = i + 1 == nPoints ? 0 : i + 1;
+		if (vertexRow[i] == vertexRow[j]) continue;  // crosses no centre line
+		const std::size_t lo = vertexRow[i] < vertexRow[j] ? i : j;
+		const std::size_t hi = lo == i ? j : i;
+		const double x0 = polygon[2 * lo], y0 = polygon[2 * lo + 1];
+		const double slope = (polygon[2 * hi] - x0) / (polygon[2 * hi + 1] - y0);
+		const int r0 = vertexRow[lo];
+		edges.push_back(
+			{r0 - first, vertexRow[hi] - first,
+			 x0 + (grid.cellCenterY(r0) - y0) * slope, slope * res});
+	}
+	const auto forEachCrossing = [&](auto&& f) {
+		for (const Edge& e : edges)
+		{
+			double x = e.x;
+			for (int r = e.row0; r < e.row1; ++r, x += e.dxPerRow)
+				f(static_cast<std::size_t>(r), x);
+		}
+	};
+	start.assign(nRows + 1, 0);
+	forEachCrossing([&](std::size_t row, double) { ++start[row + 1]; });
+	for (std::size_t k = 0; k < nRows; ++k) start[k + 1] += start[k];
+	std::vector<double>& xs = crossingX;
+	xs.resize(start[nRows]);
+	cursor.assign(start.begin(), start.end() - 1);
+	forEachCrossing([&](std::size_t row, double x) { xs[cursor[row]++] = x; });
+
+	// Crossings to spans of columns whose centres lie between two of them;
+	// `start` is rewritten to index the spans.
+	columns.clear();
+	std::size_t from = 0;
+	for (std::size_t k = 0; k < nRows; ++k)
+	{
+		const std::size_t to = start[k + 1];
+		sortCrossings(xs.data() + from, xs.data() + to);
+		start[k] = columns.size();
+		for (std::size_t c = from; c + 1 < to; c += 2)
+		{
+			const int c0 = detail::clampToInt(
+				std::ceil((xs[c] - grid.xMin) * invRes - 0.5), 0, grid.sizeX);
+			const int c1 = detail::clampToInt(
+				std::floor((xs[c + 1] - grid.xMin) * invRes - 0.5), -1, grid.sizeX - 1);
+			if (c0 > c1) continue;
+			columns.push_back(c0);
+			columns.push_back(c1);
+		}
+		from = to;
+	}
+	start[nRows] = columns.size();
+}
+
+void CPolarToCartesian::RowSpans::assignDifference(
+	const RowSpans& outer, const RowSpans& inner)
+{
+	const std::size_t nRows = outer.start.size() - 1;
+	start.resize(nRows + 1);
+	columns.clear();
+	for (std::size_t k = 0; k < nRows; ++k)
+	{
+		start[k] = columns.size();
+		std::size_t i = inner.start[k];
+		for (std::size_t o = outer.start[k]; o < outer.start[k + 1]; o += 2)
+			detail::forEachPieceOutside(
+				inner.columns, i, inner.start[k + 1], outer.columns[o], outer.columns[o + 1],
+				[this](int from, int to) {
+					columns.push_back(from);
+					columns.push_back(to);
+				});
+	}
+	start[nRows] = columns.size();
+}
+
+}  // namespace mrpt_evidential
