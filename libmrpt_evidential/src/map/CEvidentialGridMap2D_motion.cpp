@@ -84,11 +84,11 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 				}
 				// Most mixes are along the angle only, a simple free mass: a
 				// quiet cell takes it as the bulk does.
-				// (A cell with nothing occupied and no judged event is quiet
-				// at any w: its threshold, a division, is not worked out.)
+				// A cell quiet at the lowest threshold (1) is quiet at every w:
+				// its own threshold, a division, is then not worked out.
 				else if (
 					dempster && observed.occupied == 0.0 && observed.conflict == 0.0 &&
-					!(m_grid.mayBeLoud(idx) && m_grid.isLoud(idx, occupiedBelowFor(observed.free))))
+					!(m_grid.isLoud(idx, 1) && m_grid.isLoud(idx, occupiedBelowFor(observed.free))))
 					m_grid.fuseSimpleFree<decltype(decays)::value, false>(
 						idx, static_cast<float>(observed.free));
 				else

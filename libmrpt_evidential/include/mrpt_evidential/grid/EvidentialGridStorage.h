@@ -255,14 +255,6 @@ class EvidentialGridStorage
 		const QuantizedCell& c = m_cells[idx];
 		return c.occupied >= occupiedBelow || (c.aside & kEventJudgedWhenSeenFree) != 0;
 	}
-	/** False when cell idx is quiet whatever the threshold (nothing
-	 * occupied, no event judged when seen free): isLoud() then need not be
-	 * asked. */
-	bool mayBeLoud(std::size_t idx) const
-	{
-		const QuantizedCell& c = m_cells[idx];
-		return c.occupied != 0 || (c.aside & kEventJudgedWhenSeenFree) != 0;
-	}
 	/** fuseSimpleFree<Decays, true>() (a grid that keeps conflict) into
 	 * every cell of [first, first + count), four at a time where the target
 	 * has SSE2, with the same results. */
