@@ -223,13 +223,21 @@ TEST(GridStorage, GrowthAlongAPathMovesTheCellsAFewTimesOnly)
 
 TEST(GridStorage, GrowthRoomStaysWithinTheBudget)
 {
-	// Near the budget the block gets no room: every cell still fits.
+	// Near the budget the block gets less room, as much as fits: every cell
+	// still fits, and the next growth into the room moves nothing.
 	EvidentialGridStorage s;
 	s.reset(0.0, 1.0, 0.0, 1.0, 0.1, 150);
 	ASSERT_TRUE(s.growToInclude(0.0, 1.4, 0.0, 1.0, 0.0, 150));
 	EXPECT_EQ(s.geometry().cellCount(), 140u);
-	EXPECT_LE(s.cells().size(), 150u);
+	EXPECT_EQ(s.cells().size(), 150u);
+	const std::size_t layout = s.layout();
+	ASSERT_TRUE(s.growToInclude(0.0, 1.5, 0.0, 1.0, 0.0, 150));
+	EXPECT_EQ(s.layout(), layout) << "grown into the room";
 	EXPECT_FALSE(s.growToInclude(0.0, 1.6, 0.0, 1.0, 0.0, 150));
+	// A budget that leaves no room at all: a block of the grid's size.
+	s.reset(0.0, 1.0, 0.0, 1.0, 0.1, 140);
+	ASSERT_TRUE(s.growToInclude(0.0, 1.4, 0.0, 1.0, 0.0, 140));
+	EXPECT_EQ(s.cells().size(), 140u);
 }
 
 TEST(GridStorage, PackedNumbersNameTheCellsOfAGrownGrid)

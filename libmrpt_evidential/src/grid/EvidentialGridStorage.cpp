@@ -25,8 +25,12 @@ constexpr double kMaxKeptEventExponent = 100.0;
  * table is room for new insertions. */
 constexpr std::size_t kMaxKeptEventTimes = EvidentialGridStorage::kMaxStamps / 2;
 /** Room a grid that outgrows its block gets beyond each side that grows, as
- * a share of its extent along that axis. */
-constexpr double kGrowthRoom = 0.5;
+ * a share of its extent along that axis: a path one way moves the cells
+ * some log5(length) times. The room is fresh zeroed memory (vacuous cells),
+ * resident only once the grid grows into it, so it may be generous. Near
+ * the cell budget the share is halved down to the least, then the block
+ * gets no room. */
+constexpr double kGrowthRoom = 4.0, kLeastGrowthRoom = 1.0 / 16;
 
 /** A layout number no grid has had. */
 std::size_t newLayout()
@@ -53,7 +57,7 @@ void EvidentialGridStorage::reset(
 	const double sx = GridGeometry::cellsToCover(xMax - xMin, resolution);
 	const double sy = GridGeometry::cellsToCover(yMax - yMin, resolution);
 	m_geometry = {xMin, yMin, resolution, static_cast<int>(sx), static_cast<int>(sy)};
-	m_cells.assign(m_geometry.cellCount(), QuantizedCell{});
+	m_cells = CellBlock(m_geometry.cellCount());
 	m_layout = newLayout();
 	m_stampTimes.assign(1, 0.0);
 	m_stampGain.assign(1, 1.0);
@@ -110,29 +114,35 @@ bool EvidentialGridStorage::growToInclude(
 		return true;
 	}
 
-	// A new block, with room beyond each side that grows for as many cells
-	// again as half the grid's extent: a grid that keeps growing one way is
+	// A new block, with room beyond each side that grows for up to four
+	// times the grid's extent: a grid that keeps growing one way is
 	// copied a few times in all, not every few metres. The room stays
-	// within the budget of cells.
-	const double spareX = std::floor(kGrowthRoom * sx), spareY = std::floor(kGrowthRoom * sy);
-	double roomLeft = growLeft ? spareX : 0, roomRight = growRight ? spareX : 0;
-	double roomDown = growDown ? spareY : 0, roomUp = growUp ? spareY : 0;
-	if ((sx + roomLeft + roomRight) * (sy + roomDown + roomUp) > static_cast<double>(maxCells) ||
-		sx + roomLeft + roomRight > std::numeric_limits<int>::max())
+	// within the budget of cells: near it, the room is halved until the
+	// block fits.
+	double roomLeft = 0, roomRight = 0, roomDown = 0, roomUp = 0;
+	for (double share = kGrowthRoom; share >= kLeastGrowthRoom; share /= 2)
+	{
+		const double spareX = std::floor(share * sx), spareY = std::floor(share * sy);
+		roomLeft = growLeft ? spareX : 0, roomRight = growRight ? spareX : 0;
+		roomDown = growDown ? spareY : 0, roomUp = growUp ? spareY : 0;
+		if ((sx + roomLeft + roomRight) * (sy + roomDown + roomUp) <= static_cast<double>(maxCells) &&
+			sx + roomLeft + roomRight <= std::numeric_limits<int>::max())
+			break;
 		roomLeft = roomRight = roomDown = roomUp = 0;
+	}
 	const auto width = static_cast<std::size_t>(sx + roomLeft + roomRight);
 	const auto height = static_cast<std::size_t>(sy + roomDown + roomUp);
 	grown.rowStride = width;
 	grown.firstIndex =
 		static_cast<std::size_t>(roomDown) * width + static_cast<std::size_t>(roomLeft);
 	// New cells are vacuous: their stamp does not matter, vacuous never decays.
-	std::vector<QuantizedCell> cells(width * height, QuantizedCell{});
+	CellBlock cells(width * height);
 	const int dx = static_cast<int>(addLeft), dy = static_cast<int>(addDown);
 	for (int cy = 0; cy < g.sizeY; ++cy)
-		std::copy_n(
-			m_cells.begin() + static_cast<std::ptrdiff_t>(g.index(0, cy)), g.sizeX,
-			cells.begin() + static_cast<std::ptrdiff_t>(grown.index(dx, cy + dy)));
-	m_cells.swap(cells);
+		cells.copyWritten(
+			m_cells.data() + g.index(0, cy), static_cast<std::size_t>(g.sizeX),
+			grown.index(dx, cy + dy));
+	m_cells = std::move(cells);
 	m_geometry = grown;
 	m_layout = newLayout();
 	return true;
@@ -145,7 +155,7 @@ std::vector<QuantizedCell> EvidentialGridStorage::packedCells() const
 	out.reserve(g.cellCount());
 	for (int cy = 0; cy < g.sizeY; ++cy)
 	{
-		const auto row = m_cells.begin() + static_cast<std::ptrdiff_t>(g.index(0, cy));
+		const QuantizedCell* row = m_cells.data() + g.index(0, cy);
 		out.insert(out.end(), row, row + g.sizeX);
 	}
 	return out;
@@ -180,8 +190,10 @@ void EvidentialGridStorage::setKeepsConflict(bool keeps)
 	// A grid fresh from reset() holds vacuous cells only, which read the same
 	// either way: a map's first insertion does not walk its whole grid.
 	if (!m_pristine)
-		for (QuantizedCell& c : m_cells)
+		m_geometry.forEachIndex([&](std::size_t i) {
+			QuantizedCell& c = m_cells[i];
 			c = keeps ? QuantizedCell{0, c.free, c.occupied, c.stamp} : withoutConflict(c);
+		});
 	m_keepsConflict = keeps;
 	m_ceiling = ceilingFor(keeps);
 }
@@ -231,15 +243,17 @@ void EvidentialGridStorage::rebaseStamps(double to)
 		std::vector<double> factor(m_stampTimes.size());
 		for (std::size_t s = 0; s < factor.size(); ++s)
 			factor[s] = std::exp(-m_decayRate * (to - m_stampTimes[s]));
-		for (QuantizedCell& c : m_cells)
-		{
+		// The grid's cells only: the room kept for growth is vacuous, and
+		// stays untouched (no resident memory).
+		m_geometry.forEachIndex([&](std::size_t i) {
+			QuantizedCell& c = m_cells[i];
 			const double d = factor[c.stamp & kStampMask];
-			if (d >= 1.0) continue;
+			if (d >= 1.0) return;
 			if (m_keepsConflict)
 				encodeMass(decayed(decodeMass(c), d), c);
 			else
 				encodeNormal(decayed(decodeNormal(c), d), c);
-		}
+		});
 	}
 	// The times of recent events survive, oldest first; `to` comes last and
 	// is every cell's stamp.
@@ -267,13 +281,13 @@ void EvidentialGridStorage::rebaseStamps(double to)
 	times.push_back(to);
 	for (std::size_t s = 0; s < m_stampTimes.size(); ++s)
 		if (m_stampTimes[s] == to) newStamp[s] = present;
-	for (QuantizedCell& c : m_cells)
-	{
+	m_geometry.forEachIndex([&](std::size_t i) {
+		QuantizedCell& c = m_cells[i];
 		c.stamp = static_cast<std::uint16_t>((c.stamp & kStampFlags) | present);
-		if (m_keepsConflict || eventOf(c) == CellEvent::None) continue;
+		if (m_keepsConflict || eventOf(c) == CellEvent::None) return;
 		const std::uint16_t s = newStamp[eventStampOf(c)];
 		c.aside = s == kEventStampMask ? 0 : packEvent(eventOf(c), s);
-	}
+	});
 	m_stampTimes = std::move(times);
 	m_currentStamp = present;
 	updateGains();
@@ -350,7 +364,8 @@ void EvidentialGridStorage::assign(
 			  (eventOf(c) != CellEvent::None && eventStampOf(c) >= stampTimes.size()))))
 			throw std::invalid_argument("a cell holds an invalid mass, stamp or event");
 	m_geometry = geometry.packed();
-	m_cells = std::move(cells);
+	m_cells = CellBlock(cells.size());
+	m_cells.copyWritten(cells.data(), cells.size(), 0);
 	m_layout = newLayout();
 	m_stampTimes = std::move(stampTimes);
 	m_insertions = insertions;

@@ -17,12 +17,15 @@ namespace
 void sortCrossings(double* first, double* last)
 {
 	if (last - first < 2) return;  // an empty row may come as two null pointers
+	if (*first > *(last - 1)) std::reverse(first, last);
+	// Most rows of a ragged outline (a cloud's 1,800 sectors) hold many
+	// crossings, already in order.
+	if (std::is_sorted(first, last)) return;
 	if (last - first > 64)
 	{
 		std::sort(first, last);
 		return;
 	}
-	if (*first > *(last - 1)) std::reverse(first, last);
 	for (double* i = first + 1; i < last; ++i)
 	{
 		const double x = *i;
@@ -41,7 +44,7 @@ void CPolarToCartesian::RowSpans::fill(
 	const std::size_t nRows = static_cast<std::size_t>(last - first + 1);
 	// Each edge crosses the centre lines y in [lower end, upper end): a vertex
 	// is counted once, so every row holds an even number of crossings. The
-	// edges that cross a row are listed once, then walked twice (count, fill).
+	// edges that cross a row are listed once, then walked once.
 	const std::size_t nPoints = polygon.size() / 2;
 	const double invRes = 1.0 / res;
 	// The first row whose centre line lies at or above each corner.
@@ -64,21 +67,26 @@ void CPolarToCartesian::RowSpans::fill(
 			{r0 - first, vertexRow[hi] - first,
 			 x0 + (grid.cellCenterY(r0) - y0) * slope, slope * res});
 	}
-	const auto forEachCrossing = [&](auto&& f) {
-		for (const Edge& e : edges)
-		{
-			double x = e.x;
-			for (int r = e.row0; r < e.row1; ++r, x += e.dxPerRow)
-				f(static_cast<std::size_t>(r), x);
-		}
-	};
+	// Each row's count of crossings from the edges' ends alone (+1 where an
+	// edge begins, -1 past its last row: unsigned wrap-around cancels out),
+	// then the rows' offsets.
 	start.assign(nRows + 1, 0);
-	forEachCrossing([&](std::size_t row, double) { ++start[row + 1]; });
-	for (std::size_t k = 0; k < nRows; ++k) start[k + 1] += start[k];
+	for (const Edge& e : edges)
+		++start[static_cast<std::size_t>(e.row0)], --start[static_cast<std::size_t>(e.row1)];
+	for (std::size_t k = 0, covering = 0, offset = 0; k <= nRows; ++k)
+	{
+		covering += start[k];
+		start[k] = offset;
+		offset += covering;
+	}
 	std::vector<double>& xs = crossingX;
 	xs.resize(start[nRows]);
 	cursor.assign(start.begin(), start.end() - 1);
-	forEachCrossing([&](std::size_t row, double x) { xs[cursor[row]++] = x; });
+	for (const Edge& e : edges)
+	{
+		double x = e.x;
+		for (int r = e.row0; r < e.row1; ++r, x += e.dxPerRow) xs[cursor[static_cast<std::size_t>(r)]++] = x;
+	}
 
 	// Crossings to spans of columns whose centres lie between two of them;
 	// `start` is rewritten to index the spans.

@@ -115,7 +115,16 @@ class CScanImpacts
 	}
 
    private:
+	/** Sorts m_cells by index, a cell's largest occupied mass first (by
+	 * m_rowOf, then within each row). */
+	void sortByIndex();
+
 	std::vector<TImpactCell> m_cells;
+	/** The grid row of each entry of m_cells, as build() lists them. */
+	std::vector<int> m_rowOf;
+	/** sortByIndex()'s buffers, kept between scans. */
+	std::vector<TImpactCell> m_sorted;
+	std::vector<std::size_t> m_rowStart;
 };
 
 /** The observed mass of a cell that holds impacts: the mix with its free

@@ -256,14 +256,17 @@ void CEvidentialGridMap2D::getAsChangesImage(
 	// The changes are numbered cx + sizeX cy; the grid's own indices may
 	// leave room between rows.
 	const GridGeometry& g = geometry();
-	std::vector<Motion> motion(m_grid.cells().size(), Motion::None);
+	std::vector<Motion> motion(g.cellCount(), Motion::None);
 	const auto mark = [&](const std::vector<std::size_t>& cells, Motion m) {
 		for (const std::size_t i : cells)
-			if (i < g.cellCount()) motion[g.indexOfPacked(i)] = m;
+			if (i < motion.size()) motion[i] = m;
 	};
 	mark(changes.appeared, Motion::Appeared);
 	mark(changes.disappeared, Motion::Disappeared);
-	paintMotion(img, [&](std::size_t idx) { return motion[idx]; });
+	paintMotion(img, [&](std::size_t idx) {
+		return motion[static_cast<std::size_t>(g.columnOf(idx)) +
+					  static_cast<std::size_t>(g.sizeX) * static_cast<std::size_t>(g.rowOf(idx))];
+	});
 	if (withLegend)
 		img = detail::withLegend(
 			img, geometry().resolution, legendOf(kMotionPicture, renderingOptions));

@@ -216,7 +216,7 @@ void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 	// Explicit little-endian bytes: independent of the host's byte order and
 	// of the struct's layout. Row by row: the file holds the cells packed,
 	// not the room the grid keeps between its rows for growth.
-	const std::vector<QuantizedCell>& cells = m_grid.cells();
+	const auto& cells = m_grid.cells();
 	const auto sizeX = static_cast<std::size_t>(g.sizeX);
 	std::vector<std::uint8_t> block(std::min(sizeX, kCellsPerBlock) * kBytesPerCell);
 	for (int cy = 0; cy < g.sizeY; ++cy)

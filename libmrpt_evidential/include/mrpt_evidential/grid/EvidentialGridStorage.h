@@ -5,6 +5,7 @@
 #pragma once
 
 #include <mrpt_evidential/algebra/combination.h>
+#include <mrpt_evidential/grid/CellBlock.h>
 #include <mrpt_evidential/grid/GridGeometry.h>
 #include <mrpt_evidential/grid/QuantizedMass.h>
 
@@ -64,7 +65,8 @@ class EvidentialGridStorage
 	 * `margin` metres beyond each side that has to grow, keeping every cell
 	 * where it is. Does nothing when the box is already covered. A grid that
 	 * outgrows its memory moves to a block with room beyond the sides that
-	 * grew (half the grid's extent, within `maxCells`), and grows into that
+	 * grew (up to four times the grid's extent, within `maxCells`; memory
+	 * never written costs nothing), and grows into that
 	 * room later without moving: geometry()'s firstIndex and rowStride then
 	 * change, and the indices of the cells with them.
 	 * \return false (and leaves the grid as it is) if the grown grid would
@@ -333,7 +335,7 @@ class EvidentialGridStorage
 
 	/** The stored cells, read-only, at the indices geometry().index() gives
 	 * (with the room kept for growth: vacuous cells outside the grid). */
-	const std::vector<QuantizedCell>& cells() const { return m_cells; }
+	const CellBlock& cells() const { return m_cells; }
 	/** The grid's cells row by row, cx + sizeX cy (what files hold). */
 	std::vector<QuantizedCell> packedCells() const;
 	/** The insertion times of the stamps, oldest first. */
@@ -404,7 +406,7 @@ class EvidentialGridStorage
 	void updateGains();
 
 	GridGeometry m_geometry;
-	std::vector<QuantizedCell> m_cells;
+	CellBlock m_cells;
 	/** See layout(); 0 for the empty grid of the default constructor. */
 	std::size_t m_layout = 0;
 	double m_decayRate = 0.0;

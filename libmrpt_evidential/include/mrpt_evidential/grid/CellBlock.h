@@ -1,0 +1,93 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
+ * The memory of a grid's cells, with room for growth that costs nothing
+ * until it is used. */
+#pragma once
+
+#include <mrpt_evidential/grid/QuantizedMass.h>
+
+#include <cstddef>
+#include <cstdlib>
+#include <new>
+#include <utility>
+#include <vector>
+
+namespace mrpt_evidential
+{
+namespace detail
+{
+/** Memory from calloc, whose large blocks are fresh pages the system zeroes
+ * when they are first touched; a value-initialized element is left as that
+ * zeroed memory. Only for vectors made at their size and never regrown
+ * within their capacity (memory a vector gets back is not zeroed again). */
+template <typename T>
+struct ZeroedAllocator
+{
+	using value_type = T;
+	ZeroedAllocator() = default;
+	template <typename U>
+	ZeroedAllocator(const ZeroedAllocator<U>&) noexcept
+	{
+	}
+	T* allocate(std::size_t n)
+	{
+		if (void* p = std::calloc(n, sizeof(T))) return static_cast<T*>(p);
+		throw std::bad_alloc();
+	}
+	void deallocate(T* p, std::size_t) noexcept { std::free(p); }
+	template <typename U>
+	void construct(U*) noexcept
+	{
+	}
+	template <typename U, typename... Args>
+	void construct(U* p, Args&&... args)
+	{
+		::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+	}
+	template <typename U>
+	bool operator==(const ZeroedAllocator<U>&) const noexcept
+	{
+		return true;
+	}
+	template <typename U>
+	bool operator!=(const ZeroedAllocator<U>&) const noexcept
+	{
+		return false;
+	}
+};
+}  // namespace detail
+
+/** A fixed number of cells, all vacuous (zero bits) when made. The memory of
+ * cells never written stays untouched: a grid keeps room for growth around
+ * its cells at no cost in time or resident memory until it grows into it,
+ * and a copy writes only the stretches that hold a written cell. */
+class CellBlock
+{
+   public:
+	CellBlock() = default;
+	/** `count` vacuous cells. \throws std::bad_alloc */
+	explicit CellBlock(std::size_t count) : m_cells(count) {}
+	/** \throws std::bad_alloc */
+	CellBlock(const CellBlock& other);
+	/** \throws std::bad_alloc */
+	CellBlock& operator=(const CellBlock& other);
+	CellBlock(CellBlock&&) noexcept = default;
+	CellBlock& operator=(CellBlock&&) noexcept = default;
+
+	std::size_t size() const { return m_cells.size(); }
+	QuantizedCell& operator[](std::size_t i) { return m_cells[i]; }
+	const QuantizedCell& operator[](std::size_t i) const { return m_cells[i]; }
+	QuantizedCell* data() { return m_cells.data(); }
+	const QuantizedCell* data() const { return m_cells.data(); }
+	bool operator==(const CellBlock& other) const { return m_cells == other.m_cells; }
+
+	/** Copies the `count` cells from `from` on to `to` on in this block,
+	 * leaving out the stretches of vacuous cells: the memory of a block's
+	 * cells that were never written stays untouched (the cells at `to` must
+	 * be vacuous). */
+	void copyWritten(const QuantizedCell* from, std::size_t count, std::size_t to);
+
+   private:
+	std::vector<QuantizedCell, detail::ZeroedAllocator<QuantizedCell>> m_cells;
+};
+
+}  // namespace mrpt_evidential

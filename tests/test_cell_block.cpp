@@ -1,0 +1,93 @@
+/* The memory of a grid's cells: vacuous when made, copies cell for cell,
+ * and the cells never written (a grid's room for growth) take no resident
+ * memory, in the grid or in its copies. */
+#include <mrpt_evidential/grid/CellBlock.h>
+#include <mrpt_evidential/grid/EvidentialGridStorage.h>
+
+#include <fstream>
+#include <unistd.h>
+
+#include "support/test_helpers.h"
+
+using namespace mrpt_evidential;
+
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define EV_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || \
+	__has_feature(memory_sanitizer)
+#define EV_SANITIZED 1
+#endif
+#endif
+
+namespace
+{
+/** This process's resident memory in bytes, 0 where the system does not
+ * say (Linux's /proc/self/statm). */
+std::size_t residentBytes()
+{
+	std::ifstream statm("/proc/self/statm");
+	std::size_t pages = 0, resident = 0;
+	if (!(statm >> pages >> resident)) return 0;
+	return resident * static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+}
+
+QuantizedCell someCell(std::size_t i)
+{
+	return {0, static_cast<std::uint16_t>(i % 1000), static_cast<std::uint16_t>(i % 7),
+			static_cast<std::uint16_t>(i % 3)};
+}
+}  // namespace
+
+TEST(CellBlock, StartsVacuousAndCopiesCellForCell)
+{
+	CellBlock block(100'000);
+	ASSERT_EQ(block.size(), 100'000u);
+	for (std::size_t i = 0; i < block.size(); ++i) ASSERT_EQ(block[i], QuantizedCell{}) << i;
+	// Written cells scattered so that some stretches of a copy hold one cell,
+	// some several, some none, and one the last partial stretch.
+	for (std::size_t i = 0; i < block.size(); i += 997) block[i] = someCell(i);
+	block[block.size() - 1] = someCell(1);
+	const CellBlock copy = block;
+	EXPECT_TRUE(copy == block);
+	CellBlock assigned(3);
+	assigned = block;
+	EXPECT_TRUE(assigned == block);
+	assigned[5] = someCell(5);
+	EXPECT_FALSE(assigned == block) << "a copy is its own memory";
+	CellBlock written(block.size());
+	written.copyWritten(block.data(), block.size(), 0);
+	EXPECT_TRUE(written == block);
+	// Into the middle of a larger block, as a grown grid's rows.
+	CellBlock larger(block.size() + 1000);
+	larger.copyWritten(block.data() + 10, 5000, 700);
+	for (std::size_t i = 0; i < larger.size(); ++i)
+		ASSERT_EQ(larger[i], i >= 700 && i < 5700 ? block[i - 690] : QuantizedCell{}) << i;
+}
+
+TEST(CellBlock, CellsNeverWrittenTakeNoResidentMemory)
+{
+#ifdef EV_SANITIZED
+	GTEST_SKIP() << "a sanitizer's allocator and shadow memory change what is resident";
+#else
+	const std::size_t before = residentBytes();
+	if (before == 0) GTEST_SKIP() << "no /proc/self/statm here";
+	// A grid of 19 MB (50 x 120 m at 0.05 m) grown to 27 MB, into a block of
+	// 134 MB with room beyond its east side; a few cells written. The room
+	// and the cells never written stay untouched, in the grid (made, moved
+	// into the new block) and in its copy.
+	EvidentialGridStorage s;
+	s.reset(0.0, 50.0, -60.0, 60.0, 0.05, 100'000'000);
+	ASSERT_TRUE(s.growToInclude(0.0, 70.0, -60.0, 60.0, 0.0, 100'000'000));
+	ASSERT_GT(s.cells().size(), 2 * s.geometry().cellCount()) << "room kept";
+	s.beginInsertion(1.0);
+	const GridGeometry& g = s.geometry();
+	for (int cx = 0; cx < g.sizeX; cx += 50)
+		s.write(g.index(cx, g.sizeY / 2), Mass::simpleOccupied(0.7));
+	const EvidentialGridStorage copy = s;
+	const std::size_t grew = residentBytes() - before;
+	EXPECT_LT(grew, std::size_t{64} << 20)
+		<< "blocks of " << 8 * s.cells().size() / (1 << 20) << " MB";
+	g.forEachIndex([&](std::size_t i) { ASSERT_EQ(copy.cells()[i], s.cells()[i]) << i; });
+#endif
+}
