@@ -125,8 +125,9 @@ bool EvidentialGridStorage::growToInclude(
 		const double spareX = std::floor(share * sx), spareY = std::floor(share * sy);
 		roomLeft = growLeft ? spareX : 0, roomRight = growRight ? spareX : 0;
 		roomDown = growDown ? spareY : 0, roomUp = growUp ? spareY : 0;
-		if ((sx + roomLeft + roomRight) * (sy + roomDown + roomUp) <= static_cast<double>(maxCells) &&
-			sx + roomLeft + roomRight <= std::numeric_limits<int>::max())
+		const double width = sx + roomLeft + roomRight, height = sy + roomDown + roomUp;
+		if (width * height <= static_cast<double>(maxCells) &&
+			width <= std::numeric_limits<int>::max())
 			break;
 		roomLeft = roomRight = roomDown = roomUp = 0;
 	}

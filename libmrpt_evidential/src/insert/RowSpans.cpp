@@ -85,7 +85,8 @@ void CPolarToCartesian::RowSpans::fill(
 	for (const Edge& e : edges)
 	{
 		double x = e.x;
-		for (int r = e.row0; r < e.row1; ++r, x += e.dxPerRow) xs[cursor[static_cast<std::size_t>(r)]++] = x;
+		for (int r = e.row0; r < e.row1; ++r, x += e.dxPerRow)
+			xs[cursor[static_cast<std::size_t>(r)]++] = x;
 	}
 
 	// Crossings to spans of columns whose centres lie between two of them;
