@@ -24,6 +24,7 @@
 #include "CloudCases.h"
 #include "TransformLoop.h"
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -240,47 +241,66 @@ void ourInsertMapSize(benchmark::State& state, double halfSize)
 	insertionLoop(state, *map, ScanKind::Stock);
 }
 
-/** A straight path along +x, 0.5 m a scan, from a grid of 10 x 10 m (or,
- * `presized`, one that holds the whole path from the start): the cost of
- * growing the grid as a long run does. */
+/** A path of kInsertions scans, from a grid of 10 x 10 m (or, `presized`,
+ * one that holds the whole path from the start): the cost of growing the
+ * grid as a long run does. Straight along +x, 0.5 m a scan (1 km); or
+ * diagonal, 0.25 m a scan (500 m, a grid that grows along both axes: the
+ * largest a 0.05 m grid holds within the default budget of cells). */
+struct TPath
+{
+	std::string name;
+	double dx, dy;  //!< metres a scan
+};
+const std::vector<TPath>& paths()
+{
+	static const std::vector<TPath> all{
+		{"path", 0.5, 0.0}, {"diagonalpath", 0.25 * M_SQRT1_2, 0.25 * M_SQRT1_2}};
+	return all;
+}
+
 template <typename Map>
-void pathLoop(benchmark::State& state, Map& map)
+void pathLoop(benchmark::State& state, Map& map, const TPath& path)
 {
 	std::size_t i = 0;
 	for (auto _ : state)
 	{
 		state.PauseTiming();
 		const CObservation2DRangeScan scan = scanAt(ScanKind::Stock, i);
-		const CPose3D pose(0.5 * static_cast<double>(i), 0.0, 0.0, 0.0, 0.0, 0.0);
+		const auto k = static_cast<double>(i);
+		const CPose3D pose(path.dx * k, path.dy * k, 0.0, 0.0, 0.0, 0.0);
 		state.ResumeTiming();
 		map.insertObservation(scan, pose);
 		++i;
 	}
 }
 
-/** The extent a path of kInsertions scans reaches, with the stock scan's
- * range around it. */
-double pathLength() { return 0.5 * kInsertions + maxRangeOf(ScanKind::Stock) + 1.0; }
-
-void mrptPath(benchmark::State& state, bool presized)
+/** The box a path's scans reach: [-r, x] x [-r, y], each end with the stock
+ * scan's range around it. */
+std::array<double, 3> pathExtent(const TPath& path)
 {
 	const double r = maxRangeOf(ScanKind::Stock) + 1.0;
-	mrpt::maps::COccupancyGridMap2D map(
-		-5.0, presized ? pathLength() : 5.0, presized ? -r : -5.0, presized ? r : 5.0, 0.05);
-	map.insertionOptions.maxDistanceInsertion = static_cast<float>(maxRangeOf(ScanKind::Stock));
-	map.insertionOptions.wideningBeamsWithDistance = true;
-	pathLoop(state, map);
+	return {r, path.dx * kInsertions + r, path.dy * kInsertions + r};
 }
 
-void ourPath(benchmark::State& state, bool presized)
+void mrptPath(benchmark::State& state, const TPath& path, bool presized)
+{
+	const auto [r, x, y] = pathExtent(path);
+	mrpt::maps::COccupancyGridMap2D map(
+		presized ? -r : -5.0, presized ? x : 5.0, presized ? -r : -5.0, presized ? y : 5.0, 0.05);
+	map.insertionOptions.maxDistanceInsertion = static_cast<float>(maxRangeOf(ScanKind::Stock));
+	map.insertionOptions.wideningBeamsWithDistance = true;
+	pathLoop(state, map, path);
+}
+
+void ourPath(benchmark::State& state, const TPath& path, bool presized)
 {
 	auto map = ourMap(ScanKind::Stock, 0.05, OurOptions{}, 5.0);
 	if (presized)
 	{
-		const double r = maxRangeOf(ScanKind::Stock) + 1.0;
-		map->setSize(-5.0, pathLength(), -r, r, 0.05);
+		const auto [r, x, y] = pathExtent(path);
+		map->setSize(-r, x, -r, y, 0.05);
 	}
-	pathLoop(state, *map);
+	pathLoop(state, *map, path);
 }
 
 /** Both maps built from the same 200 insertions, then one scan scored per
@@ -489,14 +509,13 @@ void registerCases()
 	add("ours/mapsize/400m/stock/0.05m",
 		[](benchmark::State& s) { ourInsertMapSize(s, 200.0); }, true);
 	registerSweep();
-	for (const bool presized : {false, true})
-	{
-		const std::string grid = presized ? "presized" : "growing";
-		add("mrpt/path/" + grid + "/stock/0.05m",
-			[=](benchmark::State& s) { mrptPath(s, presized); }, true);
-		add("ours/path/" + grid + "/stock/0.05m",
-			[=](benchmark::State& s) { ourPath(s, presized); }, true);
-	}
+	for (const TPath& path : paths())
+		for (const bool presized : {false, true})
+		{
+			const std::string at = path.name + (presized ? "/presized" : "/growing") + "/stock/0.05m";
+			add("mrpt/" + at, [=](benchmark::State& s) { mrptPath(s, path, presized); }, true);
+			add("ours/" + at, [=](benchmark::State& s) { ourPath(s, path, presized); }, true);
+		}
 	bench::registerCloudCases();
 }
 
@@ -555,6 +574,10 @@ void printReport(const RecordingReporter& rep)
 			   "ours/path/presized/stock/0.05m", 1.1);
 	printRatio(rep, "1 km path, growing grid vs MRPT's growing", "ours/path/growing/stock/0.05m",
 			   "mrpt/path/growing/stock/0.05m", 1.0);
+	printRatio(rep, "500 m diagonal, growing vs presized grid",
+			   "ours/diagonalpath/growing/stock/0.05m", "ours/diagonalpath/presized/stock/0.05m", 1.1);
+	printRatio(rep, "500 m diagonal, growing grid vs MRPT's growing",
+			   "ours/diagonalpath/growing/stock/0.05m", "mrpt/diagonalpath/growing/stock/0.05m", 1.0);
 	bench::printCloudRatios(rep.microseconds);
 	std::printf("\nOn two threads (insertionThreads=2; apart from the targets):\n");
 	for (const char* at :
