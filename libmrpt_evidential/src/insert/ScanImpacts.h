@@ -120,7 +120,8 @@ class CScanImpacts
 	void sortByIndex();
 
 	std::vector<TImpactCell> m_cells;
-	/** The grid row of each entry of m_cells, as build() lists them. */
+	/** The grid row of each entry of m_cells, as build() lists them: known
+	 * there, where an index would need a division to give it back. */
 	std::vector<int> m_rowOf;
 	/** sortByIndex()'s buffers, kept between scans. */
 	std::vector<TImpactCell> m_sorted;

@@ -263,10 +263,9 @@ void CEvidentialGridMap2D::getAsChangesImage(
 	};
 	mark(changes.appeared, Motion::Appeared);
 	mark(changes.disappeared, Motion::Disappeared);
-	paintMotion(img, [&](std::size_t idx) {
-		return motion[static_cast<std::size_t>(g.columnOf(idx)) +
-					  static_cast<std::size_t>(g.sizeX) * static_cast<std::size_t>(g.rowOf(idx))];
-	});
+	const GridGeometry packed = g.packed();
+	paintMotion(
+		img, [&](std::size_t idx) { return motion[packed.index(g.columnOf(idx), g.rowOf(idx))]; });
 	if (withLegend)
 		img = detail::withLegend(
 			img, geometry().resolution, legendOf(kMotionPicture, renderingOptions));
