@@ -294,23 +294,24 @@ void CPolarToCartesian::setup(
 	if (best == votes.end() || best->first <= 0.0) return;
 	const double w = best->first;
 	m_uniformMass = Mass::simpleFree(w);
-	// The uniform region stops short of the free margin; past it the mixed
-	// path cuts the free evidence at each sector's limit. Worked out once
-	// per sector: each sector bounds the two gaps beside it.
-	m_uniformBins.resize(n);
+	// Between two sectors that both start with mass w, the mix is w itself
+	// short of both free runs' ends and of both free limits (past the nearer
+	// limit the mixed path cuts the free evidence): mixAt()'s own bounds,
+	// worked out once per sector (each bounds the two gaps beside it). A
+	// hair less, so that a corner of the outline, which lies on the arc,
+	// holds no cell that mixAt() finds past the bound.
+	m_uniformReach.resize(n);
 	for (std::size_t s = 0; s < n; ++s)
 	{
-		const auto marginBins =
-			static_cast<std::size_t>(std::ceil(m_sectorSpans[s].margin / bin));
-		m_uniformBins[s] = polar.freeBins(s) > marginBins && polar.freeMass(s) == w
-			? polar.freeBins(s) - marginBins
-			: 0;
+		const SectorSpan& span = m_sectorSpans[s];
+		m_uniformReach[s] = span.freeEnd2 > 0.0 && polar.freeMass(s) == w
+			? (1.0 - 1e-9) * std::min(std::sqrt(span.freeEnd2), span.freeLimit)
+			: 0.0;
 	}
 	outline(
 		m_uniformPolygon, nullptr, polar, sensor, m_directions, false,
 		[&](std::size_t lo, std::size_t hi) {
-			const std::size_t bins = std::min(m_uniformBins[lo], m_uniformBins[hi]);
-			return bins == 0 ? 0.0 : (static_cast<double>(bins) - 0.5) * bin;
+			return std::min(m_uniformReach[lo], m_uniformReach[hi]);
 		});
 }
 

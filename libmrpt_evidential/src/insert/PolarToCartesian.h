@@ -275,10 +275,9 @@ class CPolarToCartesian
 	 * holds enough cells, prepareRows() outlines them and the visit leaves
 	 * them out. */
 	double m_vacuousArea = 0.0;
-	/** Each sector's nearest impact, +inf without one, and its bins in the
-	 * uniform region (setup()'s scratch). */
-	std::vector<double> m_nearest;
-	std::vector<std::size_t> m_uniformBins;
+	/** Each sector's nearest impact, +inf without one, and the range within
+	 * which it bounds the uniform region (setup()'s scratch). */
+	std::vector<double> m_nearest, m_uniformReach;
 	/** Outlines of the informed and of the uniform regions (x, y pairs), and
 	 * the world directions of their corners. */
 	std::vector<double> m_polygon, m_uniformPolygon, m_directions;
