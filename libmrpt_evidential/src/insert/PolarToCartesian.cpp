@@ -184,7 +184,7 @@ void CPolarToCartesian::setup(
 	m_polar = &polar;
 	m_sensor = sensor;
 	m_box = Box{};
-	m_vacuousArea = 0.0;
+	m_informedArea = 0.0;
 	m_polygon.clear();
 	m_uniformPolygon.clear();
 	const std::size_t n = polar.sectorCount();
@@ -249,18 +249,16 @@ void CPolarToCartesian::setup(
 		[&](std::size_t lo, std::size_t hi) {
 			return std::sqrt(std::max(m_sectorSpans[lo].reach2, m_sectorSpans[hi].reach2));
 		});
-	// The vacuous bands: between a sector whose impact is near and one that
-	// reaches far (a pole, a car's edge, a tree before an open street), the
-	// gap holds nothing from the nearer one's free limit to the farther one's
-	// impacts.
-	const auto addBand = [&](std::size_t lo, std::size_t hi, double width) {
-		const VacuousBand band = vacuousBand(lo, hi);
-		m_vacuousArea += 0.5 * width * (band.to2 - band.from2);
+	// The area the scan informs bounds that of its vacuous bands, which
+	// prepareRows() works out only when the bound holds enough cells.
+	const auto addArea = [&](std::size_t lo, std::size_t hi, double width) {
+		m_informedArea +=
+			0.5 * width * std::max(m_sectorSpans[lo].reach2, m_sectorSpans[hi].reach2);
 	};
-	if (!polar.fullTurn()) addBand(0, 0, 0.5 * spacing);
+	if (!polar.fullTurn()) addArea(0, 0, 0.5 * spacing);
 	for (std::size_t g = 0; g < (polar.fullTurn() ? n : n - 1); ++g)
-		addBand(g, (g + 1) % n, spacing);
-	if (!polar.fullTurn()) addBand(n - 1, n - 1, 0.5 * spacing);
+		addArea(g, (g + 1) % n, spacing);
+	if (!polar.fullTurn()) addArea(n - 1, n - 1, 0.5 * spacing);
 
 	// A cloud's farther impacts lie beyond the polygon; the grid must grow
 	// to hold them all the same.
@@ -344,6 +342,26 @@ CPolarToCartesian::VacuousBand CPolarToCartesian::vacuousBand(
 	return best;
 }
 
+double CPolarToCartesian::vacuousArea() const
+{
+	// Between a sector whose impact is near and one that reaches far (a
+	// pole, a car's edge, a tree before an open street), the gap holds
+	// nothing from the nearer one's free limit to the farther one's impacts.
+	const CPolarSourceGrid& polar = *m_polar;
+	const std::size_t n = polar.sectorCount();
+	const double spacing = polar.sectorSpacing();
+	double area = 0.0;
+	const auto addBand = [&](std::size_t lo, std::size_t hi, double width) {
+		const VacuousBand band = vacuousBand(lo, hi);
+		area += 0.5 * width * (band.to2 - band.from2);
+	};
+	if (!polar.fullTurn()) addBand(0, 0, 0.5 * spacing);
+	for (std::size_t g = 0; g < (polar.fullTurn() ? n : n - 1); ++g)
+		addBand(g, (g + 1) % n, spacing);
+	if (!polar.fullTurn()) addBand(n - 1, n - 1, 0.5 * spacing);
+	return area;
+}
+
 bool CPolarToCartesian::inFreeMargin(double x, double y) const
 {
 	if (!m_polar || m_box.empty()) return false;
@@ -387,8 +405,9 @@ CPolarToCartesian::TRows CPolarToCartesian::prepareRows(const GridGeometry& grid
 	if (first > last) return m_rows;
 	m_spans.fill(m_polygon, grid, first, last);
 	m_uniformSpans.fill(m_uniformPolygon, grid, first, last);
-	m_skipsVacuous = m_vacuousArea >= kMinVacuousCells * res * res &&
-		m_polar->sectorSpacing() > 4 * kCentreLineSlack;
+	const double worthArea = kMinVacuousCells * res * res;
+	m_skipsVacuous = m_informedArea >= worthArea &&
+		m_polar->sectorSpacing() > 4 * kCentreLineSlack && vacuousArea() >= worthArea;
 	if (m_skipsVacuous)
 	{
 		// The bands as the region inside their far ends (an outline that

@@ -271,10 +271,12 @@ class CPolarToCartesian
 		double from2 = 0.0, to2 = 0.0;
 	};
 	VacuousBand vacuousBand(std::size_t lo, std::size_t hi) const;
-	/** The area of all the gaps' vacuous bands (m^2, set by setup()): when it
-	 * holds enough cells, prepareRows() outlines them and the visit leaves
-	 * them out. */
-	double m_vacuousArea = 0.0;
+	/** The area of all the gaps' vacuous bands (m^2): when it holds enough
+	 * cells, prepareRows() outlines them and the visit leaves them out. */
+	double vacuousArea() const;
+	/** The area of the region the scan informs, a bound of vacuousArea()
+	 * (m^2, set by setup()). */
+	double m_informedArea = 0.0;
 	/** Each sector's nearest impact, +inf without one, and the range within
 	 * which it bounds the uniform region (setup()'s scratch). */
 	std::vector<double> m_nearest, m_uniformReach;
