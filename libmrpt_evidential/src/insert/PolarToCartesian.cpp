@@ -84,6 +84,23 @@ double marginAlongBeam(
 		: margin * std::sqrt(1.0 + tan2);
 }
 
+/** fn(lo, hi, i, width) for each gap between sector centres, in order: gap g
+ * between sectors g and g + 1 (g + 1 wraps to 0 for the last gap of a full
+ * turn), and at the ends of a scan that is not a full turn the half sectors
+ * before the first centre and after the last (lo == hi). i is the entry of
+ * the gap's start among the outline's directions (the start of sector 0's
+ * span, each centre, the end of the last span), width its angle. */
+template <typename Fn>
+void forEachGap(const CPolarSourceGrid& polar, Fn&& fn)
+{
+	const std::size_t n = polar.sectorCount();
+	const double spacing = polar.sectorSpacing();
+	if (!polar.fullTurn()) fn(std::size_t{0}, std::size_t{0}, std::size_t{0}, 0.5 * spacing);
+	const std::size_t gaps = polar.fullTurn() ? n : n - 1;
+	for (std::size_t g = 0; g < gaps; ++g) fn(g, (g + 1) % n, g + 1, spacing);
+	if (!polar.fullTurn()) fn(n - 1, n - 1, n, 0.5 * spacing);
+}
+
 /** Builds the outline of a region made of one radius per gap between sector
  * centres (and per half sector at the ends of a scan that is not a full
  * turn): radiusOf(lo, hi) for the gap between sectors lo and hi. Arcs become
@@ -160,21 +177,11 @@ void outline(
 				sensor.x + flank * directions[2 * j], sensor.y + flank * directions[2 * j + 1]);
 		}
 	};
-	const auto gap = [&](std::size_t lo, std::size_t hi, std::size_t i, double width) {
+	// A scan that is not a full turn starts and ends at the sensor.
+	if (!polar.fullTurn()) addPoint(sensor.x, sensor.y);
+	forEachGap(polar, [&](std::size_t lo, std::size_t hi, std::size_t i, double width) {
 		addArc(radiusOf(lo, hi), flankOf(lo, hi), i, i + 1, width);
-	};
-	const std::size_t n = polar.sectorCount();
-	const double spacing = polar.sectorSpacing();
-	if (!polar.fullTurn())
-	{
-		addPoint(sensor.x, sensor.y);
-		gap(0, 0, 0, 0.5 * spacing);
-	}
-	// Gap g lies between centres g and g + 1 (g + 1 wraps to 0 for the last
-	// gap of a full turn); direction entry c + 1 is centre c.
-	const std::size_t gaps = polar.fullTurn() ? n : n - 1;
-	for (std::size_t g = 0; g < gaps; ++g) gap(g, (g + 1) % n, g + 1, spacing);
-	if (!polar.fullTurn()) gap(n - 1, n - 1, n, 0.5 * spacing);
+	});
 }
 }  // namespace
 
@@ -251,14 +258,10 @@ void CPolarToCartesian::setup(
 		});
 	// The area the scan informs bounds that of its vacuous bands, which
 	// prepareRows() works out only when the bound holds enough cells.
-	const auto addArea = [&](std::size_t lo, std::size_t hi, double width) {
+	forEachGap(polar, [&](std::size_t lo, std::size_t hi, std::size_t, double width) {
 		m_informedArea +=
 			0.5 * width * std::max(m_sectorSpans[lo].reach2, m_sectorSpans[hi].reach2);
-	};
-	if (!polar.fullTurn()) addArea(0, 0, 0.5 * spacing);
-	for (std::size_t g = 0; g < (polar.fullTurn() ? n : n - 1); ++g)
-		addArea(g, (g + 1) % n, spacing);
-	if (!polar.fullTurn()) addArea(n - 1, n - 1, 0.5 * spacing);
+	});
 
 	// A cloud's farther impacts lie beyond the polygon; the grid must grow
 	// to hold them all the same.
@@ -347,18 +350,11 @@ double CPolarToCartesian::vacuousArea() const
 	// Between a sector whose impact is near and one that reaches far (a
 	// pole, a car's edge, a tree before an open street), the gap holds
 	// nothing from the nearer one's free limit to the farther one's impacts.
-	const CPolarSourceGrid& polar = *m_polar;
-	const std::size_t n = polar.sectorCount();
-	const double spacing = polar.sectorSpacing();
 	double area = 0.0;
-	const auto addBand = [&](std::size_t lo, std::size_t hi, double width) {
+	forEachGap(*m_polar, [&](std::size_t lo, std::size_t hi, std::size_t, double width) {
 		const VacuousBand band = vacuousBand(lo, hi);
 		area += 0.5 * width * (band.to2 - band.from2);
-	};
-	if (!polar.fullTurn()) addBand(0, 0, 0.5 * spacing);
-	for (std::size_t g = 0; g < (polar.fullTurn() ? n : n - 1); ++g)
-		addBand(g, (g + 1) % n, spacing);
-	if (!polar.fullTurn()) addBand(n - 1, n - 1, 0.5 * spacing);
+	});
 	return area;
 }
 
