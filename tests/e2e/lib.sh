@@ -18,6 +18,40 @@ ok() {
 	echo "ok: $*"
 }
 
+# stop_process PID: ends a process this script started, and reaps it.
+stop_process() {
+	local pid=$1 deadline=$((SECONDS + 10))
+	kill "$pid" 2>/dev/null || return 0
+	# A child that has ended stays a zombie until waited for: wait for that
+	# state, not for the pid to vanish.
+	while [ $SECONDS -lt $deadline ] && [[ "$(ps -o stat= -p "$pid" 2>/dev/null)" != Z* ]]; do
+		sleep 0.2
+	done
+	kill -KILL "$pid" 2>/dev/null || true
+	wait "$pid" 2>/dev/null || true
+}
+
+# start_xvfb DIR GEOMETRY: a virtual display of its own. Xvfb picks a free
+# number itself (-displayfd) and writes it once it accepts clients, so that
+# two displays started at once never take the same number (xvfb-run -a picks
+# one from the lock files first, and may lose that race). Exports DISPLAY and
+# sets XVFB_PID, which the caller ends with stop_process; its log is
+# DIR/xvfb.log.
+start_xvfb() {
+	local dir=$1 geometry=$2 deadline=$((SECONDS + 60))
+	command -v Xvfb >/dev/null || fail "Xvfb is missing: install xvfb"
+	: >"$dir/display"
+	Xvfb -displayfd 3 -screen 0 "$geometry" -nolisten tcp 3>"$dir/display" >"$dir/xvfb.log" 2>&1 &
+	XVFB_PID=$!
+	until [ -s "$dir/display" ]; do
+		kill -0 "$XVFB_PID" 2>/dev/null || { show_log "$dir/xvfb.log"; fail "Xvfb ended"; }
+		[ $SECONDS -lt $deadline ] || { stop_process "$XVFB_PID"; fail "Xvfb did not start within 60 s"; }
+		sleep 0.2
+	done
+	DISPLAY=:$(head -n 1 "$dir/display")
+	export DISPLAY
+}
+
 # Prints a log file's last lines to stderr.
 show_log() {
 	echo "---- last lines of $1 ----" >&2

@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# Stock RawLogViewer -l <plugin>, under xvfb-run, opens a rawlog whose first
+# Stock RawLogViewer -l <plugin>, in an Xvfb of its own, opens a rawlog whose first
 # object is a serialized evidential map (written by the rawmap_dialog test):
 # its window shows up and a screenshot of the screen is not blank, and no
 # "Zero entries loaded" message appears. Without -l that message does appear
 # (the map's class is unknown, so the load stops at the first object): the
 # plugin is what makes the rawlog readable. RawLogViewer never exits by itself:
 # it is ended by its process id.
-# Usage: rawlogviewer.sh <plugin.so> <RawLogViewer> <xvfb-run> <map rawlog> <scratch dir>
+# Usage: rawlogviewer.sh <plugin.so> <RawLogViewer> <map rawlog> <scratch dir>
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 IMPORT=/usr/bin/import
 MAIN_WINDOW="RawlogViewer - Part of the MRPT project"
@@ -69,8 +69,8 @@ if [ "${1:-}" = --in-display ]; then
 	exit
 fi
 
-[ $# -eq 5 ] || fail "usage: $0 <plugin.so> <RawLogViewer> <xvfb-run> <map rawlog> <scratch dir>"
-plugin=$1 viewer=$2 xvfb_run=$3 rawlog=$4 scratch=$5
+[ $# -eq 4 ] || fail "usage: $0 <plugin.so> <RawLogViewer> <map rawlog> <scratch dir>"
+plugin=$1 viewer=$2 rawlog=$3 scratch=$4
 [ -s "$rawlog" ] || fail "$rawlog is missing: the e2e_rawmap_dialog test writes it"
 command -v xwininfo >/dev/null || fail "xwininfo is missing: install x11-utils"
 rm -rf "$scratch"
@@ -78,12 +78,19 @@ rm -rf "$scratch"
 # without the tip-of-the-day window that would cover the main one.
 mkdir -p "$scratch/home/.RawLogViewer"
 printf '[tips]\nshow=false\n' >"$scratch/home/.RawLogViewer/config.cfg"
+XVFB_PID=
+trap '[ -z "$XVFB_PID" ] || stop_process "$XVFB_PID"' EXIT
 for run in with_plugin without_plugin; do
 	[ $run = with_plugin ] && use=$plugin || use=
-	HOME=$scratch/home timeout 150 "$xvfb_run" -a -s "-screen 0 1280x1024x24" \
+	start_xvfb "$scratch" 1280x1024x24
+	status=0
+	HOME=$scratch/home timeout 150 \
 		bash "${BASH_SOURCE[0]}" --in-display "$use" "$viewer" "$rawlog" "$run" "$scratch" </dev/null ||
-		{
-			show_log "$scratch/$run.log"
-			fail "RawLogViewer session $run failed"
-		}
+		status=$?
+	stop_process "$XVFB_PID"
+	XVFB_PID=
+	if [ $status -ne 0 ]; then
+		show_log "$scratch/$run.log"
+		fail "RawLogViewer session $run failed"
+	fi
 done

@@ -45,7 +45,7 @@ map_rawlog=$6 scratch=$7 scene=${8:-}
 # minimum count keeps the blends along cell borders from passing for a colour.
 COLOUR_TOLERANCE=${COLOUR_TOLERANCE:-16}
 MIN_PIXELS=${MIN_PIXELS:-200}
-for tool in Xvfb:xvfb xdotool:xdotool xclip:xclip xwininfo:x11-utils; do
+for tool in xdotool:xdotool xclip:xclip xwininfo:x11-utils; do
 	command -v "${tool%%:*}" >/dev/null || fail "${tool%%:*} is missing: install ${tool#*:}"
 done
 for file in "$plugin" "$odometry_rawlog" "$ini" "$map_rawlog"; do
@@ -55,21 +55,10 @@ done
 
 # Everything this script starts, ended by its process id on the way out.
 started=()
-stop() {
-	local pid=$1 deadline=$((SECONDS + 10))
-	kill "$pid" 2>/dev/null || return 0
-	# A child that has ended stays a zombie until waited for: wait for that
-	# state, not for the pid to vanish.
-	while [ $SECONDS -lt $deadline ] && [[ "$(ps -o stat= -p "$pid" 2>/dev/null)" != Z* ]]; do
-		sleep 0.2
-	done
-	kill -KILL "$pid" 2>/dev/null || true
-	wait "$pid" 2>/dev/null || true
-}
 stop_all() {
 	local i
 	for ((i = ${#started[@]} - 1; i >= 0; i--)); do
-		stop "${started[i]}"
+		stop_process "${started[i]}"
 	done
 }
 trap stop_all EXIT
@@ -81,18 +70,9 @@ mkdir -p "$scratch/home/.RawLogViewer"
 printf '[tips]\nshow=false\n' >"$scratch/home/.RawLogViewer/config.cfg"
 export HOME=$scratch/home
 
-# The display: Xvfb picks a free number itself (-displayfd) and writes it once
-# it accepts clients. Wide enough for the preview beside the dialog.
-Xvfb -displayfd 3 -screen 0 2400x1300x24 -nolisten tcp 3>"$scratch/display" >"$scratch/xvfb.log" 2>&1 &
-started+=("$!")
-deadline=$((SECONDS + 60))
-until [ -s "$scratch/display" ]; do
-	kill -0 "${started[0]}" 2>/dev/null || { show_log "$scratch/xvfb.log"; fail "Xvfb ended"; }
-	[ $SECONDS -lt $deadline ] || fail "Xvfb did not start within 60 s"
-	sleep 0.2
-done
-DISPLAY=:$(head -n 1 "$scratch/display")
-export DISPLAY
+# The display, wide enough for the preview beside the dialog.
+start_xvfb "$scratch" 2400x1300x24
+started+=("$XVFB_PID")
 echo "display $DISPLAY"
 
 # window_id TITLE SECONDS: the id of the window with exactly this title,
@@ -224,7 +204,7 @@ start_viewer() {
 }
 
 end_viewer() {
-	stop "$viewer_pid"
+	stop_process "$viewer_pid"
 	unset 'started[-1]'
 }
 
@@ -270,7 +250,7 @@ paste_options() {
 			[ $SECONDS -lt $wait_copy ] && sleep 0.5 && continue
 			break
 		done
-		stop "$xclip_pid"
+		stop_process "$xclip_pid"
 		unset 'started[-1]'
 		cmp -s "$scratch/options.txt" "$ini" && break
 		[ $SECONDS -lt $deadline ] || fail "the options box does not hold the .ini after $attempt pastes (it holds $scratch/options.txt)"
