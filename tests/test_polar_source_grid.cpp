@@ -158,6 +158,39 @@ TEST(PolarSourceGrid, WideSectorsGatherSeveralBeams)
 	EXPECT_EQ(grid.sectorCount(), 181u);
 }
 
+TEST(PolarSourceGrid, BeamsMidwayBetweenSectorsAllGoTheSameWay)
+{
+	// 0.5-degree beams in sectors of 2 or 1 degrees: every other beam of a
+	// sector boundary lies midway between two centres. Each goes to the
+	// sector at the greater angle, whatever the rounding of its own angle,
+	// so that every sector inside the aperture gathers the same number of
+	// beams and has the same free mass (the stock scan gave 3, 4 or 5).
+	for (const bool rightToLeft : {true, false})
+		for (const int perSector : {2, 4, 6})
+		{
+			TSourceGridOptions o = options();
+			o.sectorWidth = 0.5 * perSector * M_PI / 180;
+			const auto scan = test::scanByIndex(
+				361, test::ScanSetup().maxRange(30.0).rightToLeft(rightToLeft),
+				[](std::size_t) { return 5.0; });
+			CPolarSourceGrid grid;
+			grid.build(scan, o);
+			const std::size_t n = grid.sectorCount();
+			ASSERT_EQ(n, 360u / perSector + 1);
+			const double inside = 1 - std::pow(1 - kMuF, perSector);
+			// Sector 0 gathers the beams up to its centre and half of its
+			// upper side, the last sector the rest.
+			const double first = 1 - std::pow(1 - kMuF, perSector / 2);
+			const double last = 1 - std::pow(1 - kMuF, perSector / 2 + 1);
+			for (std::size_t s = 0; s < n; ++s)
+			{
+				const double expected = s == 0 ? first : (s + 1 == n ? last : inside);
+				ASSERT_MASS_NEAR_AT(
+					grid.at(s, 0), Mass::simpleFree(expected), 1e-12, s, perSector);
+			}
+		}
+}
+
 TEST(PolarSourceGrid, SparseRowsMatchTheFullRowsScanAfterScan)
 {
 	// One sector gathers every beam of a narrow scan (sectorWidth above the

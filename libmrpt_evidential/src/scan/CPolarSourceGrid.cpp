@@ -36,6 +36,54 @@ void TSourceGridOptions::validate() const
 	if (const auto bad = firstInvalid()) throw std::invalid_argument(bad->describe());
 }
 
+namespace
+{
+/** The sector of each beam of an evenly spaced scan, by the beam's rank in
+ * angle order (0 at the smallest angle): the one whose centre is nearest,
+ * and for a beam midway between two centres, the one at the greater angle.
+ * Midway beams are common (sectors of an even number of beams), so the
+ * choice is made from the ranks, not from angles whose rounding would send
+ * some to each side and give sectors of one scan different beam counts. */
+class BeamSectors
+{
+   public:
+	BeamSectors(
+		std::size_t nBeams, double beamSpacing, double aperture,
+		const CPolarSourceGrid& grid)
+		: m_count(grid.sectorCount()), m_fullTurn(grid.fullTurn())
+	{
+		if (nBeams < 2) return;
+		m_ratio = beamSpacing / grid.sectorSpacing();
+		m_offset = (-0.5 * aperture - grid.firstSectorAngle()) / grid.sectorSpacing();
+		// Within the aperture's float precision of a whole number of beams
+		// (and no more than the scan has: a tiny aperture in a wide sector).
+		const double perSector = 1.0 / m_ratio;
+		const double whole = std::round(perSector);
+		if (whole >= 1.0 && whole <= static_cast<double>(nBeams) &&
+			std::abs(perSector - whole) <= 1e-6 * whole &&
+			std::abs(m_offset) <= 1e-4)
+			m_beamsPerSector = static_cast<std::size_t>(whole);
+	}
+	std::size_t operator()(std::size_t rank) const
+	{
+		if (m_count < 2) return 0;
+		const std::size_t n = m_beamsPerSector;
+		// Positions are >= 0 up to rounding: adding half and truncating
+		// rounds, without a call to std::round.
+		const std::size_t position = n > 0
+			? (2 * rank + n) / (2 * n)
+			: static_cast<std::size_t>(
+				  std::max(0.0, static_cast<double>(rank) * m_ratio + m_offset + 0.5));
+		return m_fullTurn ? position % m_count : std::min(m_count - 1, position);
+	}
+
+   private:
+	std::size_t m_count, m_beamsPerSector = 0;
+	bool m_fullTurn;
+	double m_ratio = 0.0, m_offset = 0.0;
+};
+}  // namespace
+
 void CPolarSourceGrid::build(
 	const mrpt::obs::CObservation2DRangeScan& scan,
 	const TSourceGridOptions& options)
@@ -77,28 +125,16 @@ void CPolarSourceGrid::build(
 	startSectors(options);
 
 	constexpr double kNoReturn = std::numeric_limits<double>::infinity();
-	const double invSpacing = 1.0 / m_spacing;
-	// Beam angles by the formula CObservation2DRangeScan::getScanAngle()
-	// documents, in the same float arithmetic, and ranges read in place:
-	// three library calls per beam cost more than the rest of this loop.
-	const float sign = scan.rightToLeft ? 1.0f : -1.0f;
-	const float firstBeam = sign * (-0.5f * scan.aperture);
-	const float beamStep =
-		nBeams > 1 ? sign * (scan.aperture / static_cast<float>(nBeams - 1)) : 0.0f;
+	const BeamSectors sectorOf(nBeams, beamSpacing, aperture, *this);
+	// Ranges read in place: three library calls per beam cost more than the
+	// rest of this loop.
 	const float* ranges = nBeams > 0 ? &scan.getScanRange(0) : nullptr;
 	for (std::size_t i = 0; i < nBeams; ++i)
 	{
-		std::size_t sector = 0;
-		if (nBeams > 1)
-		{
-			// Nearest sector; positions are >= 0 up to rounding, so adding
-			// half and truncating rounds (without a call to std::round).
-			const float angle = firstBeam + beamStep * static_cast<float>(i);
-			const auto position = static_cast<std::size_t>(
-				std::max(0.0, (angle - m_firstAngle) * invSpacing + 0.5));
-			sector = m_fullTurn ? position % m_sectorCount
-								: std::min(m_sectorCount - 1, position);
-		}
+		// Beam 0 is at the smallest angle when the scan turns
+		// counterclockwise, at the largest otherwise.
+		const std::size_t sector =
+			sectorOf(scan.rightToLeft ? i : nBeams - 1 - i);
 		const double r = ranges[i];
 		const bool valid = scan.getScanRangeValidity(i) && std::isfinite(r) &&
 			r > 0.0;

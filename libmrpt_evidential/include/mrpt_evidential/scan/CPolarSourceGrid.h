@@ -81,7 +81,7 @@ struct TCloudReturns
  * with s whatever the scan's direction (rightToLeft). A scan whose aperture
  * is a full turn gets sectors that go round once (fullTurn()). Bin b covers ranges
  * [b binSize, (b + 1) binSize). Each beam goes to the sector nearest to its
- * angle; its range is an impact of that sector when it is valid: flagged
+ * angle (midway between two, to the one at the greater angle); its range is an impact of that sector when it is valid: flagged
  * valid, finite and > 0. Other ranges are no return (see
  * TSourceGridOptions::invalidRangesAsFree).
  *
