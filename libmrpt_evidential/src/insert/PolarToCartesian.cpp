@@ -249,6 +249,33 @@ void CPolarToCartesian::setup(
 			reach * reach, polar.freeBins(s) == 0 ? -1.0 : freeEnd * freeEnd,
 			polar.freeMass(s), limit, margin};
 	}
+	// A sector without evidence holds nothing at every range; one with a
+	// free run, its free mass up to the run's end.
+	const auto constantTo2 = [](const SectorSpan& span) {
+		return span.reach2 <= 0.0 ? HUGE_VAL : std::max(span.freeEnd2, 0.0);
+	};
+	const auto constantFree = [](const SectorSpan& span) {
+		return span.reach2 <= 0.0 ? 0.0 : span.freeMass;
+	};
+	// Past the nearer free limit, from where a sector's bins hold more
+	// than a constant (its impacts' zone, if the limit falls short of it).
+	const auto variesFrom2 = [](const SectorSpan& span, double limit2) {
+		const double from = std::max(limit2, std::max(span.freeEnd2, 0.0));
+		return from < span.reach2 ? from : HUGE_VAL;
+	};
+	m_gapMixes.assign(n + 1, GapMix{0.0, 0.0, 0.0, 0.0, 0.0});
+	forEachGap(polar, [&](std::size_t lo, std::size_t hi, std::size_t i, double) {
+		if (lo == hi) return;
+		const SectorSpan &a = m_sectorSpans[lo], &b = m_sectorSpans[hi];
+		const double limit = std::min(a.freeLimit, b.freeLimit), limit2 = limit * limit;
+		m_gapMixes[i] = {
+			std::min({constantTo2(a), constantTo2(b), limit2}), constantFree(a),
+			constantFree(b), limit2, std::min(variesFrom2(a, limit2), variesFrom2(b, limit2))};
+	});
+	// A full turn's gap from the last centre to the first, reached from
+	// either end of the position range.
+	if (polar.fullTurn()) m_gapMixes[0] = m_gapMixes[n];
+
 	// Between two sector centres the mix reaches as far as the longer
 	// sector; before the first and after the last centre, the sector alone.
 	outline(

@@ -262,6 +262,26 @@ class CPolarToCartesian
 		double margin;
 	};
 	std::vector<SectorSpan> m_sectorSpans;
+	/** The mix of a gap between two sector centres where both sectors hold
+	 * one constant mass (within their free runs, or a sector without
+	 * evidence), short of the nearer free limit: most mixed cells (the
+	 * gaps beside beams without a return, between sectors of different
+	 * free masses), whose mix needs no sector spans and no range bins. */
+	struct GapMix
+	{
+		/** Squared range below which the mix is (1 - w) loFree + w hiFree,
+		 * w the cell's angular weight; 0 for none (and for the half gaps at
+		 * the ends of a scan that is not a full turn). */
+		double simpleEnd2;
+		double loFree, hiFree;
+		/** Squared ranges [from, to) past the nearer free limit within
+		 * which both sectors still hold one constant mass: the mix is
+		 * vacuous there (empty when to <= from). */
+		double vacuousFrom2, vacuousTo2;
+	};
+	/** Indexed by the whole part of a cell's sector position + 1, as
+	 * detail::neighbours() takes it: n + 1 entries. */
+	std::vector<GapMix> m_gapMixes;
 	/** The squared ranges [from, to) between two sectors within which every
 	 * cell is vacuous (free evidence stopped, neither sector's bins hold
 	 * anything but their free run or their vacuous tail there); from == to
@@ -316,8 +336,22 @@ inline bool CPolarToCartesian::mixAt(
 {
 	const CPolarSourceGrid& polar = *m_polar;
 	if (angle >= m_span) return false;  // outside the field of view
-	const auto ns = detail::neighbours(
-		angle * m_invSpacing - 0.5, polar.sectorCount(), polar.fullTurn());
+	const double position = angle * m_invSpacing - 0.5;
+	{
+		// The weight as detail::neighbours() works it out, bit for bit.
+		const double shifted = position + 1.0;
+		const auto whole = static_cast<std::size_t>(shifted);
+		const GapMix& gap = m_gapMixes[whole];
+		if (range2 < gap.simpleEnd2)
+		{
+			const double w = shifted - static_cast<double>(whole);
+			const double free = (1 - w) * gap.loFree + w * gap.hiFree;
+			observed = Mass::simpleFree(free);
+			return free > 1e-12;
+		}
+		if (range2 >= gap.vacuousFrom2 && range2 < gap.vacuousTo2) return false;
+	}
+	const auto ns = detail::neighbours(position, polar.sectorCount(), polar.fullTurn());
 	const SectorSpan &lo = m_sectorSpans[ns.lo], &hi = m_sectorSpans[ns.hi];
 	if (range2 >= std::max(lo.reach2, hi.reach2)) return false;
 	// Where each sector's two bins hold one constant mass (free run or
