@@ -81,9 +81,9 @@ struct TCloudReturns
  * with s whatever the scan's direction (rightToLeft). A scan whose aperture
  * is a full turn gets sectors that go round once (fullTurn()). Bin b covers ranges
  * [b binSize, (b + 1) binSize). Each beam goes to the sector nearest to its
- * angle (midway between two, to the one at the greater angle); its range is an impact of that sector when it is valid: flagged
- * valid, finite and > 0. Other ranges are no return (see
- * TSourceGridOptions::invalidRangesAsFree).
+ * angle (midway between two, to the one at the greater angle); its range is
+ * an impact of that sector when it is valid: flagged valid, finite and > 0.
+ * Other ranges are no return (see TSourceGridOptions::invalidRangesAsFree).
  *
  * Rows are kept sparse (TSectorLayout): a row's leading free bins are a count
  * and one mass, and only the bins around its impacts are stored, so memory
