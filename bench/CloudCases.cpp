@@ -226,13 +226,13 @@ void registerCloudCases()
 			{
 				const std::string at = label(real, motion, res);
 				addCase("ours/cloud/" + at,
-						[=](benchmark::State& s) { ours(s, real, motion, res); }, false);
+						[=](benchmark::State& s) { ours(s, real, motion, res); }, Timing::Calls);
 				addCase("mrpt/flattened/widening/" + at,
-						[=](benchmark::State& s) { theirs(s, real, motion, res); }, false);
+						[=](benchmark::State& s) { theirs(s, real, motion, res); }, Timing::Calls);
 				if (motion == Motion::Static)
 					addCase("ours/cloudpolar2cart/" + at,
 							[=](benchmark::State& s) { oursTransform(s, real, motion, res); },
-							false);
+							Timing::Calls);
 			}
 }
 

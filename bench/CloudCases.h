@@ -9,9 +9,21 @@
 
 namespace bench
 {
-/** Registers a case; `insertion`: it runs the fixed number of insertions. */
-void addCase(
-	const std::string& name, std::function<void(benchmark::State&)> fn, bool insertion);
+/** How a case is timed. Each case but a whole path runs several times, and
+ * the ratios take the median of the runs: a run that the machine slowed
+ * (the first cases of a process often are) then moves no ratio. */
+enum class Timing
+{
+	/** A fixed number of insertions in each run (into a fresh map). */
+	Insertions,
+	/** The insertions of a path, in one run: the grid's growth along the
+	 * whole path is what it measures. */
+	WholePath,
+	/** As many calls as fit in a fixed time, in each run. */
+	Calls
+};
+/** Registers a case. */
+void addCase(const std::string& name, std::function<void(benchmark::State&)> fn, Timing timing);
 
 /** The cloud cases: a simulated 16-layer scan of about 30,000 points and the
  * real VLP-16 one, into our map and, flattened into one 360-degree scan,

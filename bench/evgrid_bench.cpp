@@ -43,6 +43,11 @@ namespace
 bool smoke = false;
 /** Insertions per case, as mrpt-performance's grid test does. */
 constexpr int kInsertions = 2000;
+/** Runs per case (but a whole path), each of kInsertions insertions or of
+ * kCallSeconds of calls: each run starts from a fresh map, so that a run
+ * holds as many first writes to a cell as a single run would. */
+constexpr int kRepetitions = 3;
+constexpr double kCallSeconds = 0.5;
 
 #ifndef MRPT_DATASETS_DIR
 #define MRPT_DATASETS_DIR "/usr/share/mrpt/datasets"
@@ -380,24 +385,29 @@ std::string name(FusionRule r)
 }  // namespace
 
 void bench::addCase(
-	const std::string& caseName, std::function<void(benchmark::State&)> fn, bool insertion)
+	const std::string& caseName, std::function<void(benchmark::State&)> fn, Timing timing)
 {
 	auto* b = benchmark::RegisterBenchmark(caseName.c_str(), std::move(fn));
 	b->Unit(benchmark::kMicrosecond);
 	if (smoke)
+	{
 		b->Iterations(3);
-	else if (insertion)
-		b->Iterations(kInsertions);
+		return;
+	}
+	if (timing == Timing::Calls)
+		b->MinTime(kCallSeconds);
 	else
-		b->MinTime(0.5);
+		b->Iterations(kInsertions);
+	if (timing != Timing::WholePath) b->Repetitions(kRepetitions)->ReportAggregatesOnly(true);
 }
 
 namespace
 {
+using bench::Timing;
 template <typename Fn>
-void add(const std::string& caseName, Fn fn, bool insertion)
+void add(const std::string& caseName, Fn fn, Timing timing)
 {
-	bench::addCase(caseName, fn, insertion);
+	bench::addCase(caseName, fn, timing);
 }
 
 /** The settings users change (issue 15), one at a time, against MRPT's grid
@@ -456,9 +466,10 @@ void registerSweep()
 	for (const SweepCase& c : sweepCases())
 	{
 		add(sweepName("ours", c), [=](benchmark::State& s) { ourInsert(s, c.kind, 0.05, c.ours); },
-			true);
+			Timing::Insertions);
 		add(sweepName("mrpt", c),
-			[=](benchmark::State& s) { mrptInsert(s, c.kind, 0.05, true, c.ours.maxRange); }, true);
+			[=](benchmark::State& s) { mrptInsert(s, c.kind, 0.05, true, c.ours.maxRange); },
+			Timing::Insertions);
 	}
 }
 
@@ -469,9 +480,9 @@ void registerCases()
 		{
 			const std::string at = label(kind, res);
 			add("mrpt/insert/plain/" + at,
-				[=](benchmark::State& s) { mrptInsert(s, kind, res, false); }, true);
+				[=](benchmark::State& s) { mrptInsert(s, kind, res, false); }, Timing::Insertions);
 			add("mrpt/insert/widening/" + at,
-				[=](benchmark::State& s) { mrptInsert(s, kind, res, true); }, true);
+				[=](benchmark::State& s) { mrptInsert(s, kind, res, true); }, Timing::Insertions);
 			for (const SensorModel model :
 				 {SensorModel::MultiEcho, SensorModel::ReinforcedMultiEcho,
 				  SensorModel::ImpreciseMultiEcho})
@@ -480,7 +491,8 @@ void registerCases()
 					const OurOptions o{model, FusionRule::Conjunctive, decay};
 					add(std::string("ours/insert/") + name(model) + "/Conjunctive/" +
 							(decay ? "decay/" : "nodecay/") + at,
-						[=](benchmark::State& s) { ourInsert(s, kind, res, o); }, true);
+						[=](benchmark::State& s) { ourInsert(s, kind, res, o); },
+						Timing::Insertions);
 				}
 			for (const FusionRule rule :
 				 {FusionRule::Dempster, FusionRule::Yager, FusionRule::DuboisPrade,
@@ -488,33 +500,36 @@ void registerCases()
 			{
 				const OurOptions o{SensorModel::ReinforcedMultiEcho, rule, true};
 				add(std::string("ours/insert/Reinforced/") + name(rule) + "/decay/" + at,
-					[=](benchmark::State& s) { ourInsert(s, kind, res, o); }, true);
+					[=](benchmark::State& s) { ourInsert(s, kind, res, o); }, Timing::Insertions);
 			}
 			// Reported apart: the single-thread ratios are the ones that count.
 			OurOptions twoThreads;
 			twoThreads.threads = 2;
 			add("ours/threads/2/" + at,
-				[=](benchmark::State& s) { ourInsert(s, kind, res, twoThreads); }, true);
+				[=](benchmark::State& s) { ourInsert(s, kind, res, twoThreads); },
+				Timing::Insertions);
 			add("mrpt/likelihood/" + at,
-				[=](benchmark::State& s) { mrptLikelihood(s, kind, res); }, false);
+				[=](benchmark::State& s) { mrptLikelihood(s, kind, res); }, Timing::Calls);
 			add("ours/likelihood/" + at,
-				[=](benchmark::State& s) { ourLikelihood(s, kind, res); }, false);
+				[=](benchmark::State& s) { ourLikelihood(s, kind, res); }, Timing::Calls);
 			add("ours/sourcegrid/" + at,
-				[=](benchmark::State& s) { ourSourceGrid(s, kind, res); }, false);
+				[=](benchmark::State& s) { ourSourceGrid(s, kind, res); }, Timing::Calls);
 			add("ours/polar2cart/" + at,
-				[=](benchmark::State& s) { ourPolarToCartesian(s, kind, res); }, false);
+				[=](benchmark::State& s) { ourPolarToCartesian(s, kind, res); }, Timing::Calls);
 		}
 	add("ours/mapsize/40m/stock/0.05m",
-		[](benchmark::State& s) { ourInsertMapSize(s, 20.0); }, true);
+		[](benchmark::State& s) { ourInsertMapSize(s, 20.0); }, Timing::Insertions);
 	add("ours/mapsize/400m/stock/0.05m",
-		[](benchmark::State& s) { ourInsertMapSize(s, 200.0); }, true);
+		[](benchmark::State& s) { ourInsertMapSize(s, 200.0); }, Timing::Insertions);
 	registerSweep();
 	for (const TPath& path : paths())
 		for (const bool presized : {false, true})
 		{
 			const std::string at = path.name + (presized ? "/presized" : "/growing") + "/stock/0.05m";
-			add("mrpt/" + at, [=](benchmark::State& s) { mrptPath(s, path, presized); }, true);
-			add("ours/" + at, [=](benchmark::State& s) { ourPath(s, path, presized); }, true);
+			add("mrpt/" + at, [=](benchmark::State& s) { mrptPath(s, path, presized); },
+				Timing::WholePath);
+			add("ours/" + at, [=](benchmark::State& s) { ourPath(s, path, presized); },
+				Timing::WholePath);
 		}
 	bench::registerCloudCases();
 }
@@ -532,9 +547,12 @@ class RecordingReporter : public benchmark::ConsoleReporter
 	std::map<std::string, double> microseconds;
 	void ReportRuns(const std::vector<Run>& runs) override
 	{
+		// The median of a case's runs, or its one run.
 		for (const Run& r : runs)
-			if (!mrpt_evidential::compat::benchmarkRunFailed(r) && r.aggregate_name.empty())
-				microseconds[caseName(r.benchmark_name())] = r.GetAdjustedRealTime();
+			if (!mrpt_evidential::compat::benchmarkRunFailed(r) &&
+				(r.aggregate_name == "median" ||
+				 (r.aggregate_name.empty() && r.repetitions <= 1)))
+				microseconds[caseName(r.run_name.str())] = r.GetAdjustedRealTime();
 		ConsoleReporter::ReportRuns(runs);
 	}
 };
