@@ -160,11 +160,11 @@ TEST(PolarSourceGrid, WideSectorsGatherSeveralBeams)
 
 TEST(PolarSourceGrid, BeamsMidwayBetweenSectorsAllGoTheSameWay)
 {
-	// 0.5-degree beams in sectors of 2 or 1 degrees: every other beam of a
-	// sector boundary lies midway between two centres. Each goes to the
-	// sector at the greater angle, whatever the rounding of its own angle,
-	// so that every sector inside the aperture gathers the same number of
-	// beams and has the same free mass (the stock scan gave 3, 4 or 5).
+	// 0.5-degree beams in sectors of 1, 2 or 3 degrees: a beam at a sector
+	// border lies midway between two centres. Each goes to the sector at the
+	// greater angle, whatever the rounding of its own angle, so that every
+	// sector inside the aperture gathers the same number of beams and has
+	// the same free mass (the stock scan's 2-degree sectors had 3, 4 or 5).
 	for (const bool rightToLeft : {true, false})
 		for (const int perSector : {2, 4, 6})
 		{
@@ -178,8 +178,9 @@ TEST(PolarSourceGrid, BeamsMidwayBetweenSectorsAllGoTheSameWay)
 			const std::size_t n = grid.sectorCount();
 			ASSERT_EQ(n, 360u / perSector + 1);
 			const double inside = 1 - std::pow(1 - kMuF, perSector);
-			// Sector 0 gathers the beams up to its centre and half of its
-			// upper side, the last sector the rest.
+			// Sector 0, centred on the first beam, has only its upper half
+			// (its midway beam goes up); the last sector its lower half with
+			// its midway beam.
 			const double first = 1 - std::pow(1 - kMuF, perSector / 2);
 			const double last = 1 - std::pow(1 - kMuF, perSector / 2 + 1);
 			for (std::size_t s = 0; s < n; ++s)

@@ -257,20 +257,15 @@ void CPolarToCartesian::setup(
 	const auto constantFree = [](const SectorSpan& span) {
 		return span.reach2 <= 0.0 ? 0.0 : span.freeMass;
 	};
-	// Past the nearer free limit, from where a sector's bins hold more
-	// than a constant (its impacts' zone, if the limit falls short of it).
-	const auto variesFrom2 = [](const SectorSpan& span, double limit2) {
-		const double from = std::max(limit2, std::max(span.freeEnd2, 0.0));
-		return from < span.reach2 ? from : HUGE_VAL;
-	};
-	m_gapMixes.assign(n + 1, GapMix{0.0, 0.0, 0.0, 0.0, 0.0});
+	m_gapMixes.assign(n + 1, GapMix{0.0, 0.0, 0.0, VacuousBand{}});
 	forEachGap(polar, [&](std::size_t lo, std::size_t hi, std::size_t i, double) {
-		if (lo == hi) return;
+		GapMix& gap = m_gapMixes[i];
+		gap.vacuous = vacuousBand(lo, hi);
+		if (lo == hi) return;  // a half gap: the sector alone, no mix
 		const SectorSpan &a = m_sectorSpans[lo], &b = m_sectorSpans[hi];
-		const double limit = std::min(a.freeLimit, b.freeLimit), limit2 = limit * limit;
-		m_gapMixes[i] = {
-			std::min({constantTo2(a), constantTo2(b), limit2}), constantFree(a),
-			constantFree(b), limit2, std::min(variesFrom2(a, limit2), variesFrom2(b, limit2))};
+		const double limit = std::min(a.freeLimit, b.freeLimit);
+		gap.simpleEnd2 = std::min({constantTo2(a), constantTo2(b), limit * limit});
+		gap.loFree = constantFree(a), gap.hiFree = constantFree(b);
 	});
 	// A full turn's gap from the last centre to the first, reached from
 	// either end of the position range.
@@ -378,8 +373,8 @@ double CPolarToCartesian::vacuousArea() const
 	// pole, a car's edge, a tree before an open street), the gap holds
 	// nothing from the nearer one's free limit to the farther one's impacts.
 	double area = 0.0;
-	forEachGap(*m_polar, [&](std::size_t lo, std::size_t hi, std::size_t, double width) {
-		const VacuousBand band = vacuousBand(lo, hi);
+	forEachGap(*m_polar, [&](std::size_t, std::size_t, std::size_t i, double width) {
+		const VacuousBand& band = m_gapMixes[i].vacuous;
 		area += 0.5 * width * (band.to2 - band.from2);
 	});
 	return area;

@@ -262,6 +262,15 @@ class CPolarToCartesian
 		double margin;
 	};
 	std::vector<SectorSpan> m_sectorSpans;
+	/** The squared ranges [from, to) between two sectors within which every
+	 * cell is vacuous (free evidence stopped, neither sector's bins hold
+	 * anything but their free run or their vacuous tail there); from == to
+	 * when there are none. */
+	struct VacuousBand
+	{
+		double from2 = 0.0, to2 = 0.0;
+	};
+	VacuousBand vacuousBand(std::size_t lo, std::size_t hi) const;
 	/** The mix of a gap between two sector centres where both sectors hold
 	 * one constant mass (within their free runs, or a sector without
 	 * evidence), short of the nearer free limit: most mixed cells (the
@@ -274,23 +283,12 @@ class CPolarToCartesian
 		 * the ends of a scan that is not a full turn). */
 		double simpleEnd2;
 		double loFree, hiFree;
-		/** Squared ranges [from, to) past the nearer free limit within
-		 * which both sectors still hold one constant mass: the mix is
-		 * vacuous there (empty when to <= from). */
-		double vacuousFrom2, vacuousTo2;
+		/** The gap's vacuous band (vacuousBand()). */
+		VacuousBand vacuous;
 	};
 	/** Indexed by the whole part of a cell's sector position + 1, as
 	 * detail::neighbours() takes it: n + 1 entries. */
 	std::vector<GapMix> m_gapMixes;
-	/** The squared ranges [from, to) between two sectors within which every
-	 * cell is vacuous (free evidence stopped, neither sector's bins hold
-	 * anything but their free run or their vacuous tail there); from == to
-	 * when there are none. */
-	struct VacuousBand
-	{
-		double from2 = 0.0, to2 = 0.0;
-	};
-	VacuousBand vacuousBand(std::size_t lo, std::size_t hi) const;
 	/** The area of all the gaps' vacuous bands (m^2): when it holds enough
 	 * cells, prepareRows() outlines them and the visit leaves them out. */
 	double vacuousArea() const;
@@ -349,7 +347,7 @@ inline bool CPolarToCartesian::mixAt(
 			observed = Mass::simpleFree(free);
 			return free > 1e-12;
 		}
-		if (range2 >= gap.vacuousFrom2 && range2 < gap.vacuousTo2) return false;
+		if (range2 >= gap.vacuous.from2 && range2 < gap.vacuous.to2) return false;
 	}
 	const auto ns = detail::neighbours(position, polar.sectorCount(), polar.fullTurn());
 	const SectorSpan &lo = m_sectorSpans[ns.lo], &hi = m_sectorSpans[ns.hi];

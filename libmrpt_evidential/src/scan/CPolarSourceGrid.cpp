@@ -41,46 +41,37 @@ namespace
 /** The sector of each beam of an evenly spaced scan, by the beam's rank in
  * angle order (0 at the smallest angle): the one whose centre is nearest,
  * and for a beam midway between two centres, the one at the greater angle.
- * Midway beams are common (sectors of an even number of beams), so the
- * choice is made from the ranks, not from angles whose rounding would send
- * some to each side and give sectors of one scan different beam counts. */
+ * Midway beams are common (sectors of an even number of beams); their
+ * positions, worked out from the ranks, are off midway by the float
+ * aperture's rounding (parts in 1e8 of a position), so a bias far above that
+ * and far below the distance of any other beam from midway sends them all
+ * the same way. */
 class BeamSectors
 {
    public:
-	BeamSectors(
-		std::size_t nBeams, double beamSpacing, double aperture,
-		const CPolarSourceGrid& grid)
+	BeamSectors(double beamSpacing, double aperture, const CPolarSourceGrid& grid)
 		: m_count(grid.sectorCount()), m_fullTurn(grid.fullTurn())
 	{
-		if (nBeams < 2) return;
+		if (m_count < 2) return;  // one sector (or none) takes every beam
 		m_ratio = beamSpacing / grid.sectorSpacing();
-		m_offset = (-0.5 * aperture - grid.firstSectorAngle()) / grid.sectorSpacing();
-		// Within the aperture's float precision of a whole number of beams
-		// (and no more than the scan has: a tiny aperture in a wide sector).
-		const double perSector = 1.0 / m_ratio;
-		const double whole = std::round(perSector);
-		if (whole >= 1.0 && whole <= static_cast<double>(nBeams) &&
-			std::abs(perSector - whole) <= 1e-6 * whole &&
-			std::abs(m_offset) <= 1e-4)
-			m_beamsPerSector = static_cast<std::size_t>(whole);
+		m_start = (-0.5 * aperture - grid.firstSectorAngle()) / grid.sectorSpacing() + 0.5 +
+			kMidwayBias;
 	}
 	std::size_t operator()(std::size_t rank) const
 	{
 		if (m_count < 2) return 0;
-		const std::size_t n = m_beamsPerSector;
-		// Positions are >= 0 up to rounding: adding half and truncating
-		// rounds, without a call to std::round.
-		const std::size_t position = n > 0
-			? (2 * rank + n) / (2 * n)
-			: static_cast<std::size_t>(
-				  std::max(0.0, static_cast<double>(rank) * m_ratio + m_offset + 0.5));
+		// Positions are >= 0 up to rounding: truncation rounds them (the
+		// half is in m_start), without a call to std::round.
+		const auto position = static_cast<std::size_t>(
+			std::max(0.0, static_cast<double>(rank) * m_ratio + m_start));
 		return m_fullTurn ? position % m_count : std::min(m_count - 1, position);
 	}
 
    private:
-	std::size_t m_count, m_beamsPerSector = 0;
+	static constexpr double kMidwayBias = 1e-4;
+	std::size_t m_count;
 	bool m_fullTurn;
-	double m_ratio = 0.0, m_offset = 0.0;
+	double m_ratio = 0.0, m_start = 0.0;
 };
 }  // namespace
 
@@ -125,7 +116,7 @@ void CPolarSourceGrid::build(
 	startSectors(options);
 
 	constexpr double kNoReturn = std::numeric_limits<double>::infinity();
-	const BeamSectors sectorOf(nBeams, beamSpacing, aperture, *this);
+	const BeamSectors sectorOf(beamSpacing, aperture, *this);
 	// Ranges read in place: three library calls per beam cost more than the
 	// rest of this loop.
 	const float* ranges = nBeams > 0 ? &scan.getScanRange(0) : nullptr;
