@@ -263,6 +263,52 @@ TEST(PolarToCartesian, VisitsExactlyTheInformedCellsWithTheirMix)
 		}
 }
 
+TEST(PolarToCartesian, AnnouncesEachRowsCellsRowsBeforeItVisitsThem)
+{
+	std::mt19937 rng(7);
+	CPolarSourceGrid polar;
+	TSourceGridOptions options;
+	options.binSize = 0.05;
+	options.maxRange = 6.0;
+	polar.build(randomScan(rng, 361, M_PI), options);
+	CPolarToCartesian transform;
+	transform.setup(polar, PlanarSensorPose{0.3, -0.2, 0.4, false});
+	EvidentialGridStorage grid;
+	grid.reset(-8, 8, -8, 8, 0.05, 1'000'000);
+	const GridGeometry& g = grid.geometry();
+	const CPolarToCartesian::TRows rows = transform.prepareRows(g);
+	ASSERT_GT(rows.last - rows.first, 2 * CPolarToCartesian::kRowsAhead);
+	// Two bands, as two threads would take them: a band announces only its
+	// own rows.
+	const int split = (rows.first + rows.last) / 2;
+	for (const auto& [first, last] : {std::pair{rows.first, split}, {split + 1, rows.last}})
+	{
+		std::vector<bool> announced(g.cellCount(), false);
+		std::size_t visited = 0;
+		const auto visit = [&](std::size_t idx) {
+			const int row = g.rowOf(idx);
+			// A band's first rows come before anything is announced.
+			if (row < first + CPolarToCartesian::kRowsAhead) return;
+			EXPECT_TRUE(announced[idx]) << "row " << row << " visited unannounced";
+			++visited;
+		};
+		transform.visitRows(
+			g, first, last, [&](std::size_t idx, const Mass&) { visit(idx); },
+			[&](std::size_t from, std::size_t count) {
+				for (std::size_t idx = from; idx < from + count; ++idx) visit(idx);
+			},
+			[&](std::size_t from, std::size_t count) {
+				ASSERT_GT(count, 0u);
+				const int row = g.rowOf(from);
+				EXPECT_EQ(row, g.rowOf(from + count - 1)) << "a span within one row";
+				EXPECT_GE(row, first + CPolarToCartesian::kRowsAhead);
+				EXPECT_LE(row, last) << "only the band's own rows";
+				for (std::size_t idx = from; idx < from + count; ++idx) announced[idx] = true;
+			});
+		EXPECT_GT(visited, 1000u);
+	}
+}
+
 TEST(PolarToCartesian, LeavesOutOnlyVacuousCellsBetweenNearAndFarSectors)
 {
 	// Poles close by before an open street, one beam in two: between each

@@ -169,7 +169,9 @@ class CPolarToCartesian
 		VisitUniform&& visitUniform)
 	{
 		const TRows rows = prepareRows(grid);
-		visitRows(grid, rows.first, rows.last, visitMixed, visitUniform);
+		visitRows(
+			grid, rows.first, rows.last, visitMixed, visitUniform,
+			[](std::size_t, std::size_t) {});
 	}
 
 	/** The rows of `grid` that the scan informs, first to last (none when
@@ -181,12 +183,18 @@ class CPolarToCartesian
 	/** forEachInformedCell() in two steps, so that bands of rows can be
 	 * visited on several threads: prepareRows() works out the rows' spans,
 	 * then visitRows() visits rows [first, last] within them, changing
-	 * nothing of the transform. */
+	 * nothing of the transform. Before it visits a row, it calls
+	 * ahead(firstIndex, count) for each informed span of the row
+	 * kRowsAhead rows on (within [first, last]), so that the visitor can ask
+	 * for those cells' memory in time. */
 	TRows prepareRows(const GridGeometry& grid);
-	template <typename VisitMixed, typename VisitUniform>
+	template <typename VisitMixed, typename VisitUniform, typename Ahead>
 	void visitRows(
 		const GridGeometry& grid, int first, int last, VisitMixed&& visitMixed,
-		VisitUniform&& visitUniform) const;
+		VisitUniform&& visitUniform, Ahead&& ahead) const;
+	/** How many rows ahead visitRows() announces a row's spans (2 to 4
+	 * measured alike, 1 a little slower: doc/performance.md). */
+	static constexpr int kRowsAhead = 3;
 
    private:
 	/** For each grid row from `first`, the sorted x where its centre line
@@ -390,10 +398,10 @@ inline bool CPolarToCartesian::mixAt(
 	return true;
 }
 
-template <typename VisitMixed, typename VisitUniform>
+template <typename VisitMixed, typename VisitUniform, typename Ahead>
 void CPolarToCartesian::visitRows(
 	const GridGeometry& grid, int first, int last, VisitMixed&& visitMixed,
-	VisitUniform&& visitUniform) const
+	VisitUniform&& visitUniform, Ahead&& ahead) const
 {
 	if (!m_polar || m_box.empty()) return;
 	Mass observed;
@@ -402,6 +410,14 @@ void CPolarToCartesian::visitRows(
 		const auto k = static_cast<std::size_t>(cy - m_rows.first);
 		const double dy = grid.cellCenterY(cy) - m_sensor.y;
 		const std::size_t rowIndex = grid.index(0, cy);
+		if (cy + kRowsAhead <= last)
+		{
+			const std::size_t a = k + kRowsAhead, aheadIndex = grid.index(0, cy + kRowsAhead);
+			for (std::size_t o = m_spans.start[a]; o < m_spans.start[a + 1]; o += 2)
+				ahead(
+					aheadIndex + static_cast<std::size_t>(m_spans.columns[o]),
+					static_cast<std::size_t>(m_spans.columns[o + 1] - m_spans.columns[o] + 1));
+		}
 		std::size_t u = m_uniformSpans.start[k];
 		const std::size_t uEnd = m_uniformSpans.start[k + 1];
 		std::size_t v = m_skipsVacuous ? m_vacuousSpans.start[k] : 0;

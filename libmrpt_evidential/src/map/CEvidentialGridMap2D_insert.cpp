@@ -141,7 +141,8 @@ void CEvidentialGridMap2D::fuseKeepingConflict(CScanImpacts& impacts)
 					m_grid.markImpact(idx);
 					single(idx, withImpact(uniform, occupied));
 				});
-			});
+			},
+			[&](std::size_t first, std::size_t count) { m_grid.prefetchForWrite(first, count); });
 	};
 	m_workspace->fuseInBands(
 		g, insertionOptions.insertionThreads, m_grid.decayRate() > 0.0, fuseBand);

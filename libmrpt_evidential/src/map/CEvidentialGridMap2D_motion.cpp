@@ -99,7 +99,8 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 					m_grid.markImpact(idx);
 					single(band.motion, idx, withImpact(uniform, occupied), true);
 				});
-			});
+			},
+			[&](std::size_t first, std::size_t count) { m_grid.prefetchForWrite(first, count); });
 	};
 	const std::size_t used =
 		m_workspace->fuseInBands(g, io.insertionThreads, m_grid.decayRate() > 0.0, fuseBand);
