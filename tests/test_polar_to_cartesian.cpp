@@ -281,8 +281,9 @@ TEST(PolarToCartesian, AnnouncesEachRowsCellsRowsBeforeItVisitsThem)
 	// Two bands, as two threads would take them: a band announces only its
 	// own rows.
 	const int split = (rows.first + rows.last) / 2;
-	for (const auto& [first, last] : {std::pair{rows.first, split}, {split + 1, rows.last}})
+	for (const auto& band : {std::pair{rows.first, split}, {split + 1, rows.last}})
 	{
+		const int first = band.first, last = band.second;
 		std::vector<bool> announced(g.cellCount(), false);
 		std::size_t visited = 0;
 		const auto visit = [&](std::size_t idx) {
