@@ -279,7 +279,8 @@ class EvidentialGridStorage
 	 * after a few misses, leaves each one waiting on memory
 	 * (doc/performance.md). At most kMaxPrefetchLines cache lines of
 	 * kCacheLine bytes a call: past them the processor's prefetcher has the
-	 * stream. */
+	 * stream. [first, first + count) must lie within the grid; never
+	 * throws. */
 	void prefetchForWrite(std::size_t first, std::size_t count) const
 	{
 #if defined(__GNUC__)
