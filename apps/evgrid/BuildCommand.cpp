@@ -270,7 +270,7 @@ void build(const TBuildOptions& options, SteadyClock::time_point start)
 			(inserter.clouds().total > 0
 				 ? "; " + scanAccount(inserter.clouds(), "3-D clouds")
 				 : std::string()) +
-			")");
+			notInsertedAccount(input.counts()) + ")");
 	growth.finish();
 
 	TBuildRecord run;

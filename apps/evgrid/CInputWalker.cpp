@@ -136,6 +136,14 @@ void CInputWalker::handOn(
 		++m_counts.otherObservations[obs->GetRuntimeClass()->className];
 }
 
+std::string notInsertedAccount(const TInputCounts& counts)
+{
+	std::string account;
+	for (const auto& [cls, n] : counts.otherObservations)
+		account += (account.empty() ? "; not inserted: " : ", ") + std::to_string(n) + " " + cls;
+	return account;
+}
+
 bool isCloud(const mrpt::obs::CObservation& obs)
 {
 	return dynamic_cast<const mrpt::obs::CObservationPointCloud*>(&obs) ||

@@ -42,6 +42,12 @@ struct TInputCounts
 	bool trailingAction = false;
 };
 
+/** "; not inserted: 1 CObservationRotatingScan, 2 CObservationImage" for
+ * the other observations of `counts`, or "" when there are none: what a
+ * message that nothing was inserted adds, so that the user sees what the
+ * input held instead. */
+std::string notInsertedAccount(const TInputCounts& counts);
+
 /** The observation types the map reads as 3-D clouds:
  * CObservationPointCloud, CObservationVelodyneScan, CObservation3DRangeScan
  * (CObservationRotatingScan has no elevations in MRPT 2.5.8). */

@@ -79,7 +79,7 @@ void compare(const TCompareOptions& options)
 			std::to_string(n.withoutPose) + " without a pose, " +
 			std::to_string(n.heldOut) + " held out; ours took " +
 			std::to_string(n.oursInserted) + ", MRPT " +
-			std::to_string(n.mrptInserted) + ")");
+			std::to_string(n.mrptInserted) + notInsertedAccount(input.counts()) + ")");
 	maps.finish();
 
 	TCompareRecord run;

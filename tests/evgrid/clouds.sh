@@ -80,6 +80,7 @@ if [ "$(printf '%s\n2.11.4\n' "$mrpt" | sort -V | head -n 1)" = 2.11.4 ]; then
 else
   run 1 "$EVGRID" build -c "$EVGRID_INI" -i "$rot" -o "$T/rot-dataset"
   contains "$ERR" "no scan was inserted"
+  contains "$ERR" "not inserted: 1 mrpt::obs::CObservationRotatingScan"
   [ ! -e "$T/rot-dataset/summary.txt" ] || fail "a failed run wrote $T/rot-dataset/summary.txt"
 fi
 

@@ -94,6 +94,11 @@ run 1 "$EVGRID" compare -i "$T/cut.rawlog" --output "$T/kept/room.txt"
 contains "$ERR" "$T/cut.rawlog: entry "
 contains "$ERR" "truncated file?"
 [ "$(fingerprint "$T/kept")" = "$before" ] || fail "a failed run changed $T/kept"
+#    An input without 2-D scans: the error says what it held instead.
+run 1 "$EVGRID" compare -i "$DATASETS/test_velodyne_VLP16.rawlog" --output "$T/kept/room.txt"
+contains "$ERR" "a map took no scan (0 2-D scans"
+contains "$ERR" "not inserted: 1 mrpt::obs::CObservationVelodyneScan)"
+[ "$(fingerprint "$T/kept")" = "$before" ] || fail "a failed run changed $T/kept"
 
 # 3. MRPT's Malaga simplemap: real SICK scans, the keyframes' poses.
 run 0 "$EVGRID" compare -c "$EVGRID_INI" -i "$DATASETS/malaga-cs-fac-building.simplemap.gz" --output "$T/malaga.txt"
