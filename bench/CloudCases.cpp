@@ -12,12 +12,12 @@
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 
 #include <cmath>
-#include <cstdio>
 #include <random>
 #include <vector>
 
 #include "../tests/support/clouds.h"
 #include "cloud/CloudSectors.h"
+#include "RatioReport.h"
 #include "TransformLoop.h"
 
 using mrpt::poses::CPose3D;
@@ -243,14 +243,9 @@ void printCloudRatios(const std::map<std::string, double>& microseconds)
 			for (const double res : {0.05, 0.10})
 			{
 				const std::string at = label(real, motion, res);
-				const auto a = microseconds.find("ours/cloud/" + at);
-				const auto b = microseconds.find("mrpt/flattened/widening/" + at);
-				if (a == microseconds.end() || b == microseconds.end()) continue;
-				const double ratio = a->second / b->second;
-				std::printf(
-					"%-58s %8.1f us / %8.1f us = %5.2f  (target < 1.00: %s)\n",
-					("cloud vs flattened, " + at).c_str(), a->second, b->second, ratio,
-					ratio < 1.0 ? "met" : "NOT met");
+				printRatio(
+					microseconds, "cloud vs flattened, " + at, "ours/cloud/" + at,
+					"mrpt/flattened/widening/" + at, 1.0, Bound::Below);
 			}
 }
 

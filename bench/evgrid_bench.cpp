@@ -17,11 +17,11 @@
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
-#include <mrpt_evidential/MrptCompat.h>
 #include "insert/PolarToCartesian.h"
 
 #include "../tests/support/scans.h"
 #include "CloudCases.h"
+#include "RatioReport.h"
 #include "TransformLoop.h"
 
 #include <array>
@@ -534,76 +534,46 @@ void registerCases()
 	bench::registerCloudCases();
 }
 
-/** A run's name without the suffixes Google Benchmark adds. */
-std::string caseName(const std::string& runName)
+void printReport(const bench::RecordingReporter& reporter)
 {
-	return runName.substr(0, runName.find("/iterations:")).substr(0, runName.find("/min_time:"));
-}
-
-/** Keeps each case's time per iteration for the ratios. */
-class RecordingReporter : public benchmark::ConsoleReporter
-{
-   public:
-	std::map<std::string, double> microseconds;
-	void ReportRuns(const std::vector<Run>& runs) override
-	{
-		// The median of a case's runs, or its one run.
-		for (const Run& r : runs)
-			if (!mrpt_evidential::compat::benchmarkRunFailed(r) &&
-				(r.aggregate_name == "median" ||
-				 (r.aggregate_name.empty() && r.repetitions <= 1)))
-				microseconds[caseName(r.run_name.str())] = r.GetAdjustedRealTime();
-		ConsoleReporter::ReportRuns(runs);
-	}
-};
-
-void printRatio(
-	const RecordingReporter& rep, const std::string& what, const std::string& ours,
-	const std::string& theirs, double target)
-{
-	const auto a = rep.microseconds.find(ours), b = rep.microseconds.find(theirs);
-	if (a == rep.microseconds.end() || b == rep.microseconds.end()) return;
-	const double ratio = a->second / b->second;
-	std::printf(
-		"%-58s %8.1f us / %8.1f us = %5.2f  (target <= %.2f: %s)\n", what.c_str(),
-		a->second, b->second, ratio, target, ratio <= target ? "met" : "NOT met");
-}
-
-void printReport(const RecordingReporter& rep)
-{
+	const auto printRatio = [&reporter](
+								const std::string& what, const std::string& ours,
+								const std::string& theirs, double target) {
+		bench::printRatio(reporter.microseconds, what, ours, theirs, target);
+	};
 	std::printf("\nRatios (ours / reference, lower is better):\n");
 	const std::string ours = "ours/insert/Reinforced/Conjunctive/decay/";
 	for (const char* at : {"stock/0.05m", "stock/0.10m", "sena/0.05m", "wide/0.05m"})
 	{
-		printRatio(rep, std::string("insert reinforced+decay vs widening, ") + at,
+		printRatio(std::string("insert reinforced+decay vs widening, ") + at,
 				   ours + at, std::string("mrpt/insert/widening/") + at, 1.0);
-		printRatio(rep, std::string("insert reinforced+decay vs plain, ") + at,
+		printRatio(std::string("insert reinforced+decay vs plain, ") + at,
 				   ours + at, std::string("mrpt/insert/plain/") + at, 2.0);
-		printRatio(rep, std::string("likelihood, ") + at,
+		printRatio(std::string("likelihood, ") + at,
 				   std::string("ours/likelihood/") + at,
 				   std::string("mrpt/likelihood/") + at, 1.5);
 	}
-	printRatio(rep, "insert into 400 x 400 m vs 40 x 40 m map",
+	printRatio("insert into 400 x 400 m vs 40 x 40 m map",
 			   "ours/mapsize/400m/stock/0.05m", "ours/mapsize/40m/stock/0.05m", 1.1);
 	for (const SweepCase& c : sweepCases())
-		printRatio(rep, "insert vs widening, " + c.setting + ", " + name(c.kind) + "/0.05m",
+		printRatio("insert vs widening, " + c.setting + ", " + name(c.kind) + "/0.05m",
 				   sweepName("ours", c), sweepName("mrpt", c), 1.0);
-	printRatio(rep, "1 km path, growing vs presized grid", "ours/path/growing/stock/0.05m",
+	printRatio("1 km path, growing vs presized grid", "ours/path/growing/stock/0.05m",
 			   "ours/path/presized/stock/0.05m", 1.1);
-	printRatio(rep, "1 km path, growing grid vs MRPT's growing", "ours/path/growing/stock/0.05m",
+	printRatio("1 km path, growing grid vs MRPT's growing", "ours/path/growing/stock/0.05m",
 			   "mrpt/path/growing/stock/0.05m", 1.0);
-	printRatio(rep, "500 m diagonal, growing vs presized grid",
+	printRatio("500 m diagonal, growing vs presized grid",
 			   "ours/diagonalpath/growing/stock/0.05m", "ours/diagonalpath/presized/stock/0.05m", 1.1);
-	printRatio(rep, "500 m diagonal, growing grid vs MRPT's growing",
+	printRatio("500 m diagonal, growing grid vs MRPT's growing",
 			   "ours/diagonalpath/growing/stock/0.05m", "mrpt/diagonalpath/growing/stock/0.05m", 1.0);
-	bench::printCloudRatios(rep.microseconds);
+	bench::printCloudRatios(reporter.microseconds);
 	std::printf("\nOn two threads (insertionThreads=2; apart from the targets):\n");
 	for (const char* at :
 		 {"stock/0.05m", "stock/0.10m", "sena/0.05m", "sena/0.10m", "wide/0.05m", "wide/0.10m"})
 	{
-		printRatio(rep, std::string("2 threads vs 1, ") + at, std::string("ours/threads/2/") + at,
+		printRatio(std::string("2 threads vs 1, ") + at, std::string("ours/threads/2/") + at,
 				   ours + at, 1.0);
-		printRatio(rep, std::string("2 threads vs widening, ") + at,
+		printRatio(std::string("2 threads vs widening, ") + at,
 				   std::string("ours/threads/2/") + at,
 				   std::string("mrpt/insert/widening/") + at, 1.0);
 	}
@@ -631,7 +601,7 @@ int main(int argc, char** argv)
 	benchmark::Initialize(&n, args.data());
 	if (benchmark::ReportUnrecognizedArguments(n, args.data())) return 2;
 	registerCases();
-	RecordingReporter reporter;
+	bench::RecordingReporter reporter;
 	benchmark::RunSpecifiedBenchmarks(&reporter);
 	printReport(reporter);
 	benchmark::Shutdown();

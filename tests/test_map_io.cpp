@@ -1,7 +1,8 @@
 /* Serialization of CEvidentialGridMap2D: round trips through memory, files
  * and CMultiMetricMap copies; corrupted, truncated and unknown-version streams
- * are rejected, and so are forged ones that carry a valid checksum. This
- * suite links support/largest_allocation.cpp. */
+ * are rejected, and so are forged ones that carry a valid checksum (earlier
+ * versions' files: test_map_io_versions). This suite links
+ * support/largest_allocation.cpp. */
 
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -25,13 +26,20 @@
 #include "support/bounded_child.h"
 #include "support/largest_allocation.h"
 #include "support/map_bytes.h"
+#include "support/map_files.h"
 #include "support/maps.h"
 #include "support/scans.h"
 #include "support/test_helpers.h"
 
 using namespace mrpt_evidential;
 using mrpt_evidential::test::deserialize;
+using mrpt_evidential::test::expectSameMap;
+using mrpt_evidential::test::kMapFileRays;
+using mrpt_evidential::test::kMapFileScans;
 using mrpt_evidential::test::largestAllocation;
+using mrpt_evidential::test::mapWithEveryOption;
+using mrpt_evidential::test::putLE;
+using mrpt_evidential::test::reseal;
 using mrpt_evidential::test::resetLargestAllocation;
 using mrpt_evidential::test::serialize;
 using mrpt_evidential::test::wall;
@@ -39,243 +47,11 @@ using mrpt::poses::CPose3D;
 using mrpt::serialization::archiveFrom;
 namespace fs = std::filesystem;
 
-namespace
-{
-/** How these tests take scans: 181 rays over 180 degrees, maxRange 10 m;
- * each test gives the time and the ranges, a function of the ray index. */
-const test::ScanSetup kSetup = test::ScanSetup().maxRange(10.0);
-constexpr std::size_t kRays = 181;
-
-/** A map with non-default options in every group and three scans inserted at
- * different poses and times, so that decay, stamps and growth all show. */
-CEvidentialGridMap2D makeMap(double resolution = 0.1)
-{
-	CEvidentialGridMap2D map(-2.0, 2.0, -2.0, 2.0, resolution);
-	map.setMaxCells(2'000'000);
-	map.insertionOptions.fusionRule = FusionRule::Yager;
-	map.insertionOptions.decayRate = 0.05;
-	map.insertionOptions.maxRange = 4.0;
-	map.insertionOptions.growthMargin = 0.5;
-	map.insertionOptions.muF = 0.6;
-	map.insertionOptions.conflictHandling = ConflictHandling::ToUnknown;
-	map.insertionOptions.groundRemoval = GroundRemoval::Height;
-	map.insertionOptions.minObstacleHeight = 0.15;
-	map.insertionOptions.maxObstacleHeight = 2.5;
-	map.insertionOptions.groundReturns = GroundReturns::Nothing;
-	map.likelihoodOptions.sigma = 0.2;
-	map.likelihoodOptions.decimation = 3;
-	map.likelihoodOptions.unknownAsNeutral = false;
-	map.renderingOptions.style = RenderStyle::Masses;
-	map.renderingOptions.appearedColor = mrpt::img::TColor(1, 2, 3);
-	map.renderingOptions.showUnknown = true;
-	map.renderingOptions.height = 0.25;
-	map.genericMapParams.enableObservationLikelihood = false;
-	map.insertObservation(
-		test::scanByIndex(
-			kRays, kSetup.at(1000.0), [](std::size_t i) { return 2.0 + 0.005 * i; }),
-		mrpt::poses::CPose3D(0, 0, 0, 0, 0, 0));
-	map.insertObservation(
-		test::scanByIndex(
-			kRays, kSetup.at(1001.5), [](std::size_t i) { return 2.5 - 0.004 * i; }),
-		mrpt::poses::CPose3D(0.4, -0.3, 0, 0.5, 0, 0));
-	map.insertObservation(
-		test::scanByIndex(
-			kRays, kSetup.at(1003.25), [](std::size_t i) { return 1.5 + (i % 7) * 0.1; }),
-		mrpt::poses::CPose3D(-0.2, 0.6, 0, -2.0, 0, 0));
-	return map;
-}
-
-/** Geometry, options, generic parameters, stamps and every cell equal. */
-void expectSameMap(const CEvidentialGridMap2D& a, const CEvidentialGridMap2D& b)
-{
-	EXPECT_EQ(a.getXMin(), b.getXMin());
-	EXPECT_EQ(a.getYMin(), b.getYMin());
-	EXPECT_EQ(a.getResolution(), b.getResolution());
-	ASSERT_EQ(a.getSizeX(), b.getSizeX());
-	ASSERT_EQ(a.getSizeY(), b.getSizeY());
-	EXPECT_EQ(a.maxCells(), b.maxCells());
-
-	const auto& ia = a.insertionOptions;
-	const auto& ib = b.insertionOptions;
-	EXPECT_EQ(ia.sensorModel, ib.sensorModel);
-	EXPECT_EQ(ia.muF, ib.muF);
-	EXPECT_EQ(ia.muO, ib.muO);
-	EXPECT_EQ(ia.imprecision, ib.imprecision);
-	EXPECT_EQ(ia.imprecisionProfile, ib.imprecisionProfile);
-	EXPECT_EQ(ia.sectorWidth, ib.sectorWidth);
-	EXPECT_EQ(ia.maxRange, ib.maxRange);
-	EXPECT_EQ(ia.invalidRangesAsFree, ib.invalidRangesAsFree);
-	EXPECT_EQ(ia.fusionRule, ib.fusionRule);
-	EXPECT_EQ(ia.decayRate, ib.decayRate);
-	EXPECT_EQ(ia.horizontalTolerance, ib.horizontalTolerance);
-	EXPECT_EQ(ia.conflictHandling, ib.conflictHandling);
-	EXPECT_EQ(ia.growthMargin, ib.growthMargin);
-	EXPECT_EQ(ia.freeMargin, ib.freeMargin);
-	EXPECT_EQ(ia.motionWindow, ib.motionWindow);
-	EXPECT_EQ(ia.groundRemoval, ib.groundRemoval);
-	EXPECT_EQ(ia.minObstacleHeight, ib.minObstacleHeight);
-	EXPECT_EQ(ia.maxObstacleHeight, ib.maxObstacleHeight);
-	EXPECT_EQ(ia.groundReturns, ib.groundReturns);
-
-	const auto& la = a.likelihoodOptions;
-	const auto& lb = b.likelihoodOptions;
-	EXPECT_EQ(la.occupiedMass, lb.occupiedMass);
-	EXPECT_EQ(la.maxCorrsDistance, lb.maxCorrsDistance);
-	EXPECT_EQ(la.sigma, lb.sigma);
-	EXPECT_EQ(la.zHit, lb.zHit);
-	EXPECT_EQ(la.zRandom, lb.zRandom);
-	EXPECT_EQ(la.maxRange, lb.maxRange);
-	EXPECT_EQ(la.decimation, lb.decimation);
-	EXPECT_EQ(la.unknownAsNeutral, lb.unknownAsNeutral);
-
-	std::ostringstream ra, rb;
-	a.renderingOptions.dumpToTextStream(ra);
-	b.renderingOptions.dumpToTextStream(rb);
-	EXPECT_EQ(ra.str(), rb.str());
-
-	EXPECT_EQ(
-		a.genericMapParams.enableSaveAs3DObject,
-		b.genericMapParams.enableSaveAs3DObject);
-	EXPECT_EQ(
-		a.genericMapParams.enableObservationLikelihood,
-		b.genericMapParams.enableObservationLikelihood);
-	EXPECT_EQ(
-		a.genericMapParams.enableObservationInsertion,
-		b.genericMapParams.enableObservationInsertion);
-
-	EXPECT_EQ(a.insertionCount(), b.insertionCount());
-	EXPECT_EQ(a.latestTime(), b.latestTime());
-	EXPECT_EQ(a.storage().decayRate(), b.storage().decayRate());
-	EXPECT_EQ(a.storage().stampTimes(), b.storage().stampTimes());
-	EXPECT_EQ(a.storage().packedCells(), b.storage().packedCells());
-	for (int cy = 0; cy < a.getSizeY(); ++cy)
-		for (int cx = 0; cx < a.getSizeX(); ++cx)
-			ASSERT_EQ(
-				a.getCellMassesByIndex(cx, cy), b.getCellMassesByIndex(cx, cy))
-				<< "at (" << cx << ", " << cy << ")";
-}
-
-/** Writes the checksum a stream's payload should have, as a forger would:
- * over everything between MRPT's header (class name and version) and the
- * checksum, which precedes MRPT's one-byte end marker. */
-void reseal(std::vector<std::uint8_t>& bytes)
-{
-	const std::size_t begin = 1 + (bytes[0] & 0x7F) + 1, end = bytes.size() - 9;
-	const std::uint64_t h = test::payloadChecksum(bytes.data() + begin, end - begin);
-	for (int i = 0; i < 8; ++i) bytes[end + i] = static_cast<std::uint8_t>(h >> (8 * i));
-}
-
-/** Puts the n low bytes of v at `at`, little-endian. */
-void putLE(std::vector<std::uint8_t>& bytes, std::size_t at, std::uint64_t v, int n)
-{
-	for (int i = 0; i < n; ++i) bytes[at + i] = static_cast<std::uint8_t>(v >> (8 * i));
-}
-
-/** groundRemoval, minObstacleHeight, maxObstacleHeight, groundReturns. */
-constexpr std::size_t kCloudOptionBytes = 1 + 8 + 8 + 1;
-
-/** Index in `bytes` (a serialized map) of the high byte of the stamp of the
- * cell numbered `packed` (cx + sizeX cy). */
-std::size_t stampHighByte(
-	const std::vector<std::uint8_t>& bytes, const CEvidentialGridMap2D& map, std::size_t packed)
-{
-	const std::size_t firstCell = bytes.size() - 9 - 8 * map.geometry().cellCount();
-	return firstCell + 8 * packed + 7;
-}
-
-/** The map as version 4 wrote it: the same layout, no cell marked as one
- * that flips. */
-std::vector<std::uint8_t> asVersion4(const CEvidentialGridMap2D& map)
-{
-	std::vector<std::uint8_t> bytes = test::serialize(map);
-	const std::size_t header = 1 + (bytes[0] & 0x7F) + 1;
-	bytes[header - 1] = 4;
-	for (std::size_t i = 0; i < map.geometry().cellCount(); ++i)
-		bytes[stampHighByte(bytes, map, i)] &= 0x7F;
-	reseal(bytes);
-	return bytes;
-}
-
-/** The map as version 3 wrote it: no rendering options after the
- * likelihood options (offsets of the layout in the io source). */
-std::vector<std::uint8_t> asVersion3(const CEvidentialGridMap2D& map)
-{
-	std::vector<std::uint8_t> bytes = asVersion4(map);
-	const std::size_t header = 1 + (bytes[0] & 0x7F) + 1;
-	bytes[header - 1] = 3;
-	const std::size_t insertionBytes = 1 + 8 + 8 + 8 + 1 + 8 + 8 + 1 + 8 + 1 + 8 + 8 + 1 +
-		8 + 24 + kCloudOptionBytes;
-	const std::size_t likelihoodBytes = 6 * 8 + 4 + 1;
-	const std::size_t rendering = header + 32 + 8 + insertionBytes + likelihoodBytes;
-	const std::size_t renderingBytes = 1 + 6 * 3 + 5 + 8;
-	bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(rendering),
-				bytes.begin() + static_cast<std::ptrdiff_t>(rendering + renderingBytes));
-	reseal(bytes);
-	return bytes;
-}
-
-/** The bytes version 1 would have written for `map` (whose stamp table fits
- * version 1): today's layout without freeMargin, the motion options and
- * keepsConflict, and stamps without their impact flag. */
-std::vector<std::uint8_t> asVersion1(const CEvidentialGridMap2D& map)
-{
-	std::vector<std::uint8_t> bytes = asVersion3(map);
-	const std::size_t header = 1 + (bytes[0] & 0x7F) + 1;
-	bytes[header - 1] = 1;
-	const std::size_t cells = map.geometry().cellCount();
-	const std::size_t firstCell = bytes.size() - 9 - 8 * cells;
-	for (std::size_t i = 0; i < cells; ++i)
-		bytes[firstCell + 8 * i + 7] &= 0x3F;  // the stamp's flag bits
-	// From the back, so that the positions in front stay put: keepsConflict
-	// before the cells, the motion options after growthMargin, freeMargin
-	// after invalidRangesAsFree (offsets of the layout in the io source).
-	bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(firstCell - 1));
-	const std::size_t insertion = header + 32 + 8;
-	const std::size_t freeMargin = insertion + 1 + 8 + 8 + 8 + 1 + 8 + 8 + 1;
-	const std::size_t motion = freeMargin + 8 + 1 + 8 + 8 + 1 + 8;
-	const auto cut = [&](std::size_t at, std::size_t n) {
-		bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(at),
-					bytes.begin() + static_cast<std::ptrdiff_t>(at + n));
-	};
-	cut(motion + 24, kCloudOptionBytes);
-	cut(motion, 24);
-	cut(freeMargin, 8);
-	reseal(bytes);
-	return bytes;
-}
-
-/** The map as version 2 wrote it: no cloud options after the motion
- * options. */
-std::vector<std::uint8_t> asVersion2(const CEvidentialGridMap2D& map)
-{
-	std::vector<std::uint8_t> bytes = asVersion3(map);
-	const std::size_t header = 1 + (bytes[0] & 0x7F) + 1;
-	bytes[header - 1] = 2;
-	const std::size_t insertion = header + 32 + 8;
-	const std::size_t clouds = insertion + 1 + 8 + 8 + 8 + 1 + 8 + 8 + 1 + 8 + 1 + 8 + 8 +
-		1 + 8 + 24;
-	bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(clouds),
-				bytes.begin() + static_cast<std::ptrdiff_t>(clouds + kCloudOptionBytes));
-	reseal(bytes);
-	return bytes;
-}
-
-/** A small map that keeps conflict and holds some. */
-CEvidentialGridMap2D conflictingMap()
-{
-	CEvidentialGridMap2D map(-2.0, 2.0, -2.0, 2.0, 0.1);
-	map.insertionOptions.conflictHandling = ConflictHandling::Keep;
-	map.insertObservation(test::arcScan(181, 1.5, kSetup.at(1.0)), CPose3D());
-	map.insertObservation(test::arcScan(181, 1.8, kSetup.at(2.0)), CPose3D());
-	return map;
-}
-}  // namespace
-
 TEST(MapIO, BuiltMapIsNotTrivial)
 {
 	// The round trips below prove something only if the map holds evidence,
 	// decayed to several stamps, and grew beyond its initial bounds.
-	const CEvidentialGridMap2D map = makeMap();
+	const CEvidentialGridMap2D map = mapWithEveryOption();
 	EXPECT_EQ(map.insertionCount(), 3u);
 	EXPECT_GT(map.storage().stampTimes().size(), 1u);
 	EXPECT_GT(map.getSizeX(), 40);
@@ -286,14 +62,14 @@ TEST(MapIO, BuiltMapIsNotTrivial)
 
 TEST(MapIO, MemoryRoundTripKeepsEverything)
 {
-	const CEvidentialGridMap2D original = makeMap();
+	const CEvidentialGridMap2D original = mapWithEveryOption();
 	CEvidentialGridMap2D copy;
 	deserialize(serialize(original), copy);
 	expectSameMap(original, copy);
 	// The copy keeps working as a map: the next insertion decays and fuses
 	// exactly as in the original.
 	CEvidentialGridMap2D next = original;
-	const auto scan = test::arcScan(kRays, 1.8, kSetup.at(1004.0));
+	const auto scan = test::arcScan(kMapFileRays, 1.8, kMapFileScans.at(1004.0));
 	next.insertObservation(scan, mrpt::poses::CPose3D());
 	copy.insertObservation(scan, mrpt::poses::CPose3D());
 	expectSameMap(next, copy);
@@ -302,7 +78,7 @@ TEST(MapIO, MemoryRoundTripKeepsEverything)
 TEST(MapIO, EmptyMapRoundTrip)
 {
 	const CEvidentialGridMap2D original(-1.0, 3.0, 0.5, 2.5, 0.25);
-	CEvidentialGridMap2D copy = makeMap();
+	CEvidentialGridMap2D copy = mapWithEveryOption();
 	deserialize(serialize(original), copy);
 	expectSameMap(original, copy);
 	EXPECT_TRUE(copy.isEmpty());
@@ -310,7 +86,7 @@ TEST(MapIO, EmptyMapRoundTrip)
 
 TEST(MapIO, GenericObjectReadFindsTheClass)
 {
-	const CEvidentialGridMap2D original = makeMap();
+	const CEvidentialGridMap2D original = mapWithEveryOption();
 	const auto bytes = serialize(original);
 	mrpt::io::CMemoryStream buf;
 	buf.assignMemoryNotOwn(bytes.data(), bytes.size());
@@ -323,7 +99,7 @@ TEST(MapIO, GenericObjectReadFindsTheClass)
 TEST(MapIO, FileRoundTripThroughSavedRepresentation)
 {
 	const fs::path dir = test::scratchDir("map_io", "file_round_trip");
-	const CEvidentialGridMap2D original = makeMap();
+	const CEvidentialGridMap2D original = mapWithEveryOption();
 	const std::string prefix = (dir / "saved").string();
 	original.saveMetricMapRepresentationToFile(prefix);
 	// CFileGZInputStream reads plain files as well as compressed ones.
@@ -336,7 +112,7 @@ TEST(MapIO, FileRoundTripThroughSavedRepresentation)
 TEST(MapIO, EveryFlippedByteIsDetected)
 {
 	// Coarse cells keep the stream small enough to try every position.
-	const CEvidentialGridMap2D original = makeMap(0.3);
+	const CEvidentialGridMap2D original = mapWithEveryOption(0.3);
 	const auto bytes = serialize(original);
 	ASSERT_LT(bytes.size(), 20000u);
 	const CEvidentialGridMap2D pristine(-1.0, 1.0, -1.0, 1.0, 0.5);
@@ -372,7 +148,7 @@ TEST(MapIO, EveryTruncationIsDetected)
 	// support/whole_read_archive.h), so the sizes the map reads may be
 	// garbage. In a child whose address space may grow by 256 MB, a map that
 	// allocated what such a size claims would fail.
-	const CEvidentialGridMap2D original = makeMap(0.3);
+	const CEvidentialGridMap2D original = mapWithEveryOption(0.3);
 	const auto bytes = serialize(original);
 	const auto end = test::runInBoundedChild(std::size_t(256) << 20, [&] {
 		for (std::size_t len = 0; len < bytes.size(); ++len)
@@ -403,150 +179,6 @@ TEST(MapIO, EveryTruncationIsDetected)
 	EXPECT_EQ(end.report, "");
 }
 
-TEST(MapIO, CellsThatFlipAreKeptInFiles)
-{
-	// The motion layer's mark (bit 15 of a cell's stamp), set here in the
-	// stream as a forger would, reads back and is written again.
-	const CEvidentialGridMap2D original = makeMap();
-	auto bytes = serialize(original);
-	const std::size_t packed = 7 + 3 * static_cast<std::size_t>(original.getSizeX());
-	bytes[stampHighByte(bytes, original, packed)] |= 0x80;
-	reseal(bytes);
-	CEvidentialGridMap2D back;
-	deserialize(bytes, back);
-	const GridGeometry& g = back.geometry();
-	for (std::size_t i = 0; i < g.cellCount(); ++i)
-		EXPECT_EQ(back.storage().flipped(g.indexOfPacked(i)), i == packed) << "cell " << i;
-	EXPECT_EQ(serialize(back), bytes);
-}
-
-TEST(MapIO, VersionFourFilesStillLoad)
-{
-	// Version 4 marked no cell as one that flips; one that does is a
-	// damaged file.
-	const CEvidentialGridMap2D original = makeMap();
-	CEvidentialGridMap2D back;
-	deserialize(asVersion4(original), back);
-	expectSameMap(original, back);
-	auto bytes = asVersion4(original);
-	bytes[stampHighByte(bytes, original, 0)] |= 0x80;
-	reseal(bytes);
-	CEvidentialGridMap2D target;
-	EXPECT_ANY_THROW(deserialize(bytes, target));
-	EXPECT_TRUE(target.isEmpty());
-}
-
-TEST(MapIO, VersionThreeFilesStillLoad)
-{
-	// Version 3 had no rendering options: they read as the defaults.
-	CEvidentialGridMap2D original = conflictingMap();
-	original.renderingOptions.style = RenderStyle::Masses;
-	original.renderingOptions.height = 2.0;
-	CEvidentialGridMap2D back;
-	deserialize(asVersion3(original), back);
-	original.renderingOptions = CEvidentialGridMap2D::TRenderingOptions();
-	expectSameMap(original, back);
-}
-
-TEST(MapIO, VersionTwoFilesStillLoad)
-{
-	// Version 2 had no cloud options: they read as the defaults, and the
-	// rest as it was.
-	CEvidentialGridMap2D original = conflictingMap();
-	original.insertionOptions.groundRemoval = GroundRemoval::None;
-	original.insertionOptions.maxObstacleHeight = 4.0;
-	CEvidentialGridMap2D back;
-	deserialize(asVersion2(original), back);
-	const CEvidentialGridMap2D::TInsertionOptions defaults;
-	EXPECT_EQ(back.insertionOptions.groundRemoval, defaults.groundRemoval);
-	EXPECT_EQ(back.insertionOptions.minObstacleHeight, defaults.minObstacleHeight);
-	EXPECT_EQ(back.insertionOptions.maxObstacleHeight, defaults.maxObstacleHeight);
-	EXPECT_EQ(back.insertionOptions.groundReturns, defaults.groundReturns);
-	original.insertionOptions.groundRemoval = defaults.groundRemoval;
-	original.insertionOptions.maxObstacleHeight = defaults.maxObstacleHeight;
-	expectSameMap(original, back);
-}
-
-TEST(MapIO, VersionOneFilesStillLoad)
-{
-	// Version 1 had no free margin, no motion layer and cells that always
-	// kept conflict. A map that keeps conflict reads back as it was, with
-	// freeMargin 0 (what it was built with); its cells that lean occupied
-	// are taken to have held impacts, as the likelihood field needs.
-	const CEvidentialGridMap2D original = conflictingMap();
-	ASSERT_GT(original.countDecisions().conflict, 0u);
-	CEvidentialGridMap2D back;
-	deserialize(asVersion1(original), back);
-	EXPECT_TRUE(back.storage().keepsConflict());
-	EXPECT_EQ(back.insertionOptions.freeMargin, 0.0);
-	const std::size_t cells = original.geometry().cellCount();
-	ASSERT_EQ(back.geometry().cellCount(), cells);
-	for (std::size_t i = 0; i < cells; ++i)
-	{
-		ASSERT_EQ(back.storage().read(i), original.storage().read(original.geometry().indexOfPacked(i))) << i;
-		const Mass m = back.storage().read(i);
-		ASSERT_EQ(back.storage().heldImpact(i), m.occupied > m.free) << i;
-	}
-
-	// A map of another conflict handling loses its (rounding-level)
-	// conflict and gets a motion layer, with no event yet.
-	CEvidentialGridMap2D other = conflictingMap();
-	other.insertionOptions.conflictHandling = ConflictHandling::Normalize;
-	CEvidentialGridMap2D motion;
-	deserialize(asVersion1(other), motion);
-	EXPECT_FALSE(motion.storage().keepsConflict());
-	for (std::size_t i = 0; i < cells; ++i)
-	{
-		const Mass m = motion.storage().read(i);
-		ASSERT_EQ(m.conflict, 0.0);
-		ASSERT_MASS_NEAR_AT(m, normalized(original.storage().read(original.geometry().indexOfPacked(i))), 2e-4, i, 0);
-		ASSERT_EQ(motion.storage().event(i), CellEvent::None);
-	}
-}
-
-TEST(MapIO, VersionZeroFilesStillLoad)
-{
-	// Version 0 stored m(empty), m(F) and m(O) themselves in the cells;
-	// version 1 the conflict and the normal part (issue 14), in the same
-	// layout. A map with conflict, written as version 0 would have written
-	// it, reads back with the same masses within the two formats' roundings.
-	const CEvidentialGridMap2D original = conflictingMap();
-	ASSERT_GT(original.countDecisions().conflict, 0u);
-
-	auto bytes = asVersion1(original);
-	const std::size_t versionPos = 1 + (bytes[0] & 0x7F);
-	bytes[versionPos] = 0;
-	const std::size_t cells = original.geometry().cellCount();
-	const std::size_t first = bytes.size() - 9 - 8 * cells;  // checksum, end marker
-	const auto put = [&](std::size_t at, double v) {
-		putLE(bytes, at, quantizeMass(v), 2);
-	};
-	for (std::size_t i = 0; i < cells; ++i)
-	{
-		// Version 0's cell: the masses rounded, the stamp as it was. These
-		// masses round to values that never pass the scale together.
-		const Mass m = decodeMass(original.storage().packedCells()[i]);
-		put(first + 8 * i, m.conflict);
-		put(first + 8 * i + 2, m.free);
-		put(first + 8 * i + 4, m.occupied);
-	}
-	reseal(bytes);
-	CEvidentialGridMap2D back;
-	deserialize(bytes, back);
-	ASSERT_EQ(back.geometry().cellCount(), cells);
-	for (std::size_t i = 0; i < cells; ++i)
-		ASSERT_MASS_NEAR_AT(
-			back.storage().read(i), original.storage().read(original.geometry().indexOfPacked(i)), 2.0 / kMassScale, i,
-			0);
-
-	// A version-0 cell whose masses pass 1 together is refused, as before.
-	putLE(bytes, first, 40000, 2);
-	putLE(bytes, first + 2, 40000, 2);
-	reseal(bytes);
-	CEvidentialGridMap2D refused;
-	EXPECT_ANY_THROW(deserialize(bytes, refused));
-}
-
 TEST(MapIO, OptionsThatTheGridCannotInsertWithAreRejected)
 {
 	// maxRange 2e5 m is valid for cells of 1 m, but at 1 cm it would take
@@ -563,7 +195,7 @@ TEST(MapIO, OptionsThatTheGridCannotInsertWithAreRejected)
 
 TEST(MapIO, UnknownVersionIsRejected)
 {
-	auto bytes = serialize(makeMap(0.3));
+	auto bytes = serialize(mapWithEveryOption(0.3));
 	// MRPT's object header: 0x80 | name length, the class name, the version.
 	const std::size_t versionPos = 1 + (bytes[0] & 0x7F);
 	ASSERT_EQ(bytes[versionPos], 5);
@@ -580,7 +212,7 @@ TEST(MapIO, HugeSizeIsRejectedBeforeAllocating)
 {
 	// sizeX and sizeY as large as an int32 allows: rejected from the header
 	// (the message names the budget), not by a failed 32 EB allocation.
-	auto bytes = serialize(makeMap(0.3));
+	auto bytes = serialize(mapWithEveryOption(0.3));
 	const std::size_t geometryPos = 1 + (bytes[0] & 0x7F) + 1;
 	for (std::size_t i = 0; i < 8; ++i)
 		bytes[geometryPos + 24 + i] = (i % 4 == 3) ? 0x7F : 0xFF;
@@ -621,11 +253,11 @@ TEST(MapIO, MultiMetricMapCopyHoldsTheSameCells)
 	map->genericMapParams.enableObservationLikelihood = false;
 	original.insertObservation(
 		test::scanByIndex(
-			kRays, kSetup.at(50.0), [](std::size_t i) { return 2.0 + 0.01 * i; }),
+			kMapFileRays, kMapFileScans.at(50.0), [](std::size_t i) { return 2.0 + 0.01 * i; }),
 		mrpt::poses::CPose3D(0.1, 0.2, 0, 0.3, 0, 0));
 	original.insertObservation(
 		test::scanByIndex(
-			kRays, kSetup.at(51.0), [](std::size_t i) { return 2.2 - 0.003 * i; }),
+			kMapFileRays, kMapFileScans.at(51.0), [](std::size_t i) { return 2.2 - 0.003 * i; }),
 		mrpt::poses::CPose3D(-0.3, 0.1, 0, 1.0, 0, 0));
 	ASSERT_EQ(map->insertionCount(), 2u);
 

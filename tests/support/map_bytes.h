@@ -1,5 +1,6 @@
 /* Shared by the map tests and the fuzz targets: a map to and from the bytes
- * of its MRPT serialization, and the checksum the map writes over them. */
+ * of its MRPT serialization, the checksum the map writes over them, and the
+ * means of a forger who edits such bytes. */
 #pragma once
 
 #include <mrpt/io/CMemoryStream.h>
@@ -36,5 +37,21 @@ inline void deserialize(
 	mrpt::io::CMemoryStream buf;
 	if (!bytes.empty()) buf.assignMemoryNotOwn(bytes.data(), bytes.size());
 	mrpt::serialization::archiveFrom(buf) >> map;
+}
+
+/** Writes the checksum a stream's payload should have, as a forger would:
+ * over everything between MRPT's header (class name and version) and the
+ * checksum, which precedes MRPT's one-byte end marker. */
+inline void reseal(std::vector<std::uint8_t>& bytes)
+{
+	const std::size_t begin = 1 + (bytes[0] & 0x7F) + 1, end = bytes.size() - 9;
+	const std::uint64_t h = payloadChecksum(bytes.data() + begin, end - begin);
+	for (int i = 0; i < 8; ++i) bytes[end + i] = static_cast<std::uint8_t>(h >> (8 * i));
+}
+
+/** Puts the n low bytes of v at `at`, little-endian. */
+inline void putLE(std::vector<std::uint8_t>& bytes, std::size_t at, std::uint64_t v, int n)
+{
+	for (int i = 0; i < n; ++i) bytes[at + i] = static_cast<std::uint8_t>(v >> (8 * i));
 }
 }  // namespace mrpt_evidential::test

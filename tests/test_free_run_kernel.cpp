@@ -1,0 +1,176 @@
+/* The bulk kernels of FreeRunKernel.cpp: a run of cells fused at once gives
+ * the cells, bit for bit, that fusing them one by one gives (one mass for the
+ * run or one per cell; with and without decay; keeping conflict or not), and
+ * lists the loud cells it leaves, in order. */
+#include <gtest/gtest.h>
+#include <mrpt_evidential/grid/EvidentialGridStorage.h>
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+using namespace mrpt_evidential;
+
+namespace
+{
+/** A grid without conflict whose cells hold random masses, stamps of several
+ * insertions, impact flags and events of every kind. */
+EvidentialGridStorage gridWithVariedCells(double decayRate, std::uint32_t seed)
+{
+	EvidentialGridStorage g;
+	g.reset(0.0, 4.0, 0.0, 1.0, 0.1, 1000);
+	g.setKeepsConflict(false);
+	g.setDecayRate(decayRate);
+	g.setEventRetention(10.0);
+	std::mt19937 rng(seed);
+	std::uniform_real_distribution<double> unit(0.0, 1.0);
+	for (int scan = 0; scan < 6; ++scan)
+	{
+		g.beginInsertion(100.0 + 0.7 * scan);
+		for (std::size_t idx = 0; idx < g.geometry().cellCount(); ++idx)
+		{
+			if (unit(rng) < 0.5) continue;
+			const double f = unit(rng), o = unit(rng) * (1.0 - f) * (unit(rng) < 0.3 ? 1.0 : 0.1);
+			g.write(idx, Mass{0.0, f, o, 1.0 - f - o});
+			if (unit(rng) < 0.2) g.markImpact(idx);
+			if (unit(rng) < 0.2) g.markFlipped(idx);
+			const double e = unit(rng);
+			if (e < 0.1) g.setEvent(idx, CellEvent::Appeared);
+			else if (e < 0.2) g.setEvent(idx, CellEvent::Leaving);
+			else if (e < 0.3) g.setEvent(idx, CellEvent::Disappeared);
+		}
+	}
+	g.beginInsertion(106.0);
+	return g;
+}
+}  // namespace
+
+TEST(GridStorage, QuietFreeRunsFuseAsCellByCellAndListTheLoudInOrder)
+{
+	for (const double rate : {0.0, 0.05})
+		for (std::size_t first = 0; first < 5; ++first)
+			for (const std::size_t count : {0, 1, 3, 4, 5, 7, 8, 9, 200, 395})
+			{
+				EvidentialGridStorage bulk = gridWithVariedCells(rate, 7);
+				EvidentialGridStorage oneByOne = gridWithVariedCells(rate, 7);
+				const float w = 0.37f;
+				const std::uint16_t occupiedBelow = 20000;
+				std::vector<std::size_t> loud, expectedLoud;
+				if (rate > 0.0)
+					bulk.fuseQuietFreeRun<true>(first, count, w, occupiedBelow, loud);
+				else
+					bulk.fuseQuietFreeRun<false>(first, count, w, occupiedBelow, loud);
+				for (std::size_t idx = first; idx < first + count; ++idx)
+				{
+					if (oneByOne.isLoud(idx, occupiedBelow))
+						expectedLoud.push_back(idx);
+					else if (rate > 0.0)
+						oneByOne.fuseSimpleFree<true, false>(idx, w);
+					else
+						oneByOne.fuseSimpleFree<false, false>(idx, w);
+				}
+				ASSERT_EQ(loud, expectedLoud) << rate << " " << first << " " << count;
+				// Bit for bit, loud cells untouched.
+				ASSERT_TRUE(bulk.cells() == oneByOne.cells()) << rate << " " << first << " " << count;
+				if (count >= 200)
+				{
+					EXPECT_GT(loud.size(), 10u);
+					EXPECT_LT(loud.size(), count / 2);
+				}
+			}
+}
+
+TEST(GridStorage, SaturatedFreeCellsWithoutDecayReadAsCellByCell)
+{
+	// Cells free at the ceiling, in runs long enough for whole groups of
+	// four, among varied ones: without decay the bulk (and the cell-by-cell
+	// fusion) leaves them as they are (only their stamp stays older), which
+	// reads as the full arithmetic does, now and after a change of rate (it
+	// rebases every stamp first).
+	EvidentialGridStorage bulk = gridWithVariedCells(0.0, 5);
+	const std::size_t cells = bulk.geometry().cellCount();
+	for (std::size_t idx = 0; idx < cells; ++idx)
+		if (idx % 50 < 30)
+		{
+			bulk.write(idx, Mass{0.0, 1.0, 0.0, 0.0});
+			bulk.setEvent(idx, CellEvent::None);  // quiet, so that groups mix both kinds
+		}
+	bulk.beginInsertion(107.0);
+	EvidentialGridStorage oneByOne = bulk;
+	const float w = 0.37f;
+	const std::uint16_t occupiedBelow = 20000;
+	std::vector<std::size_t> loud;
+	bulk.fuseQuietFreeRun<false>(0, cells, w, occupiedBelow, loud);
+	EvidentialGridStorage alsoSkipping = oneByOne;
+	for (std::size_t idx = 0; idx < cells; ++idx)
+		if (!alsoSkipping.isLoud(idx, occupiedBelow))
+			alsoSkipping.fuseSimpleFree<false, false>(idx, w);
+	EXPECT_TRUE(bulk.cells() == alsoSkipping.cells()) << "the bulk as cell by cell";
+	// The full arithmetic, cell by cell: the decaying path at rate 0 (a
+	// factor of exactly 1) skips no cell.
+	for (std::size_t idx = 0; idx < cells; ++idx)
+		if (!oneByOne.isLoud(idx, occupiedBelow)) oneByOne.fuseSimpleFree<true, false>(idx, w);
+	const auto sameReading = [&](const char* when) {
+		for (std::size_t idx = 0; idx < cells; ++idx)
+		{
+			const Mass a = bulk.read(idx), b = oneByOne.read(idx);
+			ASSERT_EQ(a.free, b.free) << when << " cell " << idx;
+			ASSERT_EQ(a.occupied, b.occupied) << when << " cell " << idx;
+			ASSERT_EQ(a.unknown, b.unknown) << when << " cell " << idx;
+			ASSERT_EQ(bulk.event(idx), oneByOne.event(idx));
+			ASSERT_EQ(bulk.heldImpact(idx), oneByOne.heldImpact(idx));
+			ASSERT_EQ(bulk.flipped(idx), oneByOne.flipped(idx));
+		}
+	};
+	sameReading("now");
+	EXPECT_FALSE(bulk.cells() == oneByOne.cells()) << "the saturated cells were skipped";
+	bulk.setDecayRate(0.05);
+	oneByOne.setDecayRate(0.05);
+	bulk.beginInsertion(120.0);
+	oneByOne.beginInsertion(120.0);
+	sameReading("after a change of rate");
+}
+
+TEST(GridStorage, FreeRunsKeepingConflictFuseAsCellByCell)
+{
+	for (const double rate : {0.0, 0.05})
+		for (const std::size_t count : {0, 1, 3, 4, 6, 9, 397})
+		{
+			const auto grid = [&] {
+				EvidentialGridStorage g;
+				g.reset(0.0, 4.0, 0.0, 1.0, 0.1, 1000);
+				g.setDecayRate(rate);
+				std::mt19937 rng(11);
+				std::uniform_real_distribution<double> unit(0.0, 1.0);
+				for (int scan = 0; scan < 5; ++scan)
+				{
+					g.beginInsertion(50.0 + 0.9 * scan);
+					for (std::size_t idx = 0; idx < g.geometry().cellCount(); ++idx)
+					{
+						if (unit(rng) < 0.4) continue;
+						// Conflict up to total, so that the cap is met too.
+						const double k = unit(rng) < 0.05 ? 1.0 : 0.6 * unit(rng);
+						const double f = (1.0 - k) * unit(rng), o = (1.0 - k - f) * unit(rng);
+						g.write(idx, Mass{k, f, o, 1.0 - k - f - o});
+						if (unit(rng) < 0.2) g.markImpact(idx);
+						if (unit(rng) < 0.2) g.markFlipped(idx);
+					}
+				}
+				g.beginInsertion(56.0);
+				return g;
+			};
+			EvidentialGridStorage bulk = grid(), oneByOne = grid();
+			const std::size_t first = 3;
+			const float w = 0.41f;
+			if (rate > 0.0)
+				bulk.fuseFreeRunKeepingConflict<true>(first, count, w);
+			else
+				bulk.fuseFreeRunKeepingConflict<false>(first, count, w);
+			for (std::size_t idx = first; idx < first + count; ++idx)
+				if (rate > 0.0)
+					oneByOne.fuseSimpleFree<true, true>(idx, w);
+				else
+					oneByOne.fuseSimpleFree<false, true>(idx, w);
+			ASSERT_TRUE(bulk.cells() == oneByOne.cells()) << rate << " " << count;
+		}
+}

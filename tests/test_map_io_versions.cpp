@@ -1,0 +1,272 @@
+/* Map files of every earlier version still load, as what those versions
+ * wrote (each made from today's bytes by undoing what came since); and the
+ * latest version's additions (the cells that flip) are kept in files. */
+
+#include <gtest/gtest.h>
+#include <mrpt/poses/CPose3D.h>
+#include <mrpt_evidential/CEvidentialGridMap2D.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "support/map_bytes.h"
+#include "support/map_files.h"
+#include "support/scans.h"
+#include "support/test_helpers.h"
+
+using namespace mrpt_evidential;
+using mrpt_evidential::test::deserialize;
+using mrpt_evidential::test::expectSameMap;
+using mrpt_evidential::test::kMapFileScans;
+using mrpt_evidential::test::mapWithEveryOption;
+using mrpt_evidential::test::putLE;
+using mrpt_evidential::test::reseal;
+using mrpt_evidential::test::serialize;
+using mrpt::poses::CPose3D;
+
+namespace
+{
+/** groundRemoval, minObstacleHeight, maxObstacleHeight, groundReturns. */
+constexpr std::size_t kCloudOptionBytes = 1 + 8 + 8 + 1;
+
+/** Index in `bytes` (a serialized map) of the high byte of the stamp of the
+ * cell numbered `packed` (cx + sizeX cy). */
+std::size_t stampHighByte(
+	const std::vector<std::uint8_t>& bytes, const CEvidentialGridMap2D& map, std::size_t packed)
+{
+	const std::size_t firstCell = bytes.size() - 9 - 8 * map.geometry().cellCount();
+	return firstCell + 8 * packed + 7;
+}
+
+/** The map as version 4 wrote it: the same layout, no cell marked as one
+ * that flips. */
+std::vector<std::uint8_t> asVersion4(const CEvidentialGridMap2D& map)
+{
+	std::vector<std::uint8_t> bytes = serialize(map);
+	const std::size_t header = 1 + (bytes[0] & 0x7F) + 1;
+	bytes[header - 1] = 4;
+	for (std::size_t i = 0; i < map.geometry().cellCount(); ++i)
+		bytes[stampHighByte(bytes, map, i)] &= 0x7F;
+	reseal(bytes);
+	return bytes;
+}
+
+/** The map as version 3 wrote it: no rendering options after the
+ * likelihood options (offsets of the layout in the io source). */
+std::vector<std::uint8_t> asVersion3(const CEvidentialGridMap2D& map)
+{
+	std::vector<std::uint8_t> bytes = asVersion4(map);
+	const std::size_t header = 1 + (bytes[0] & 0x7F) + 1;
+	bytes[header - 1] = 3;
+	const std::size_t insertionBytes = 1 + 8 + 8 + 8 + 1 + 8 + 8 + 1 + 8 + 1 + 8 + 8 + 1 +
+		8 + 24 + kCloudOptionBytes;
+	const std::size_t likelihoodBytes = 6 * 8 + 4 + 1;
+	const std::size_t rendering = header + 32 + 8 + insertionBytes + likelihoodBytes;
+	const std::size_t renderingBytes = 1 + 6 * 3 + 5 + 8;
+	bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(rendering),
+				bytes.begin() + static_cast<std::ptrdiff_t>(rendering + renderingBytes));
+	reseal(bytes);
+	return bytes;
+}
+
+/** The bytes version 1 would have written for `map` (whose stamp table fits
+ * version 1): today's layout without freeMargin, the motion options and
+ * keepsConflict, and stamps without their impact flag. */
+std::vector<std::uint8_t> asVersion1(const CEvidentialGridMap2D& map)
+{
+	std::vector<std::uint8_t> bytes = asVersion3(map);
+	const std::size_t header = 1 + (bytes[0] & 0x7F) + 1;
+	bytes[header - 1] = 1;
+	const std::size_t cells = map.geometry().cellCount();
+	const std::size_t firstCell = bytes.size() - 9 - 8 * cells;
+	for (std::size_t i = 0; i < cells; ++i)
+		bytes[firstCell + 8 * i + 7] &= 0x3F;  // the stamp's flag bits
+	// From the back, so that the positions in front stay put: keepsConflict
+	// before the cells, the motion options after growthMargin, freeMargin
+	// after invalidRangesAsFree (offsets of the layout in the io source).
+	bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(firstCell - 1));
+	const std::size_t insertion = header + 32 + 8;
+	const std::size_t freeMargin = insertion + 1 + 8 + 8 + 8 + 1 + 8 + 8 + 1;
+	const std::size_t motion = freeMargin + 8 + 1 + 8 + 8 + 1 + 8;
+	const auto cut = [&](std::size_t at, std::size_t n) {
+		bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(at),
+					bytes.begin() + static_cast<std::ptrdiff_t>(at + n));
+	};
+	cut(motion + 24, kCloudOptionBytes);
+	cut(motion, 24);
+	cut(freeMargin, 8);
+	reseal(bytes);
+	return bytes;
+}
+
+/** The map as version 2 wrote it: no cloud options after the motion
+ * options. */
+std::vector<std::uint8_t> asVersion2(const CEvidentialGridMap2D& map)
+{
+	std::vector<std::uint8_t> bytes = asVersion3(map);
+	const std::size_t header = 1 + (bytes[0] & 0x7F) + 1;
+	bytes[header - 1] = 2;
+	const std::size_t insertion = header + 32 + 8;
+	const std::size_t clouds = insertion + 1 + 8 + 8 + 8 + 1 + 8 + 8 + 1 + 8 + 1 + 8 + 8 +
+		1 + 8 + 24;
+	bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(clouds),
+				bytes.begin() + static_cast<std::ptrdiff_t>(clouds + kCloudOptionBytes));
+	reseal(bytes);
+	return bytes;
+}
+
+/** A small map that keeps conflict and holds some. */
+CEvidentialGridMap2D conflictingMap()
+{
+	CEvidentialGridMap2D map(-2.0, 2.0, -2.0, 2.0, 0.1);
+	map.insertionOptions.conflictHandling = ConflictHandling::Keep;
+	map.insertObservation(test::arcScan(181, 1.5, kMapFileScans.at(1.0)), CPose3D());
+	map.insertObservation(test::arcScan(181, 1.8, kMapFileScans.at(2.0)), CPose3D());
+	return map;
+}
+}  // namespace
+
+TEST(MapIO, CellsThatFlipAreKeptInFiles)
+{
+	// The motion layer's mark (bit 15 of a cell's stamp), set here in the
+	// stream as a forger would, reads back and is written again.
+	const CEvidentialGridMap2D original = mapWithEveryOption();
+	auto bytes = serialize(original);
+	const std::size_t packed = 7 + 3 * static_cast<std::size_t>(original.getSizeX());
+	bytes[stampHighByte(bytes, original, packed)] |= 0x80;
+	reseal(bytes);
+	CEvidentialGridMap2D back;
+	deserialize(bytes, back);
+	const GridGeometry& g = back.geometry();
+	for (std::size_t i = 0; i < g.cellCount(); ++i)
+		EXPECT_EQ(back.storage().flipped(g.indexOfPacked(i)), i == packed) << "cell " << i;
+	EXPECT_EQ(serialize(back), bytes);
+}
+
+TEST(MapIO, VersionFourFilesStillLoad)
+{
+	// Version 4 marked no cell as one that flips; one that does is a
+	// damaged file.
+	const CEvidentialGridMap2D original = mapWithEveryOption();
+	CEvidentialGridMap2D back;
+	deserialize(asVersion4(original), back);
+	expectSameMap(original, back);
+	auto bytes = asVersion4(original);
+	bytes[stampHighByte(bytes, original, 0)] |= 0x80;
+	reseal(bytes);
+	CEvidentialGridMap2D target;
+	EXPECT_ANY_THROW(deserialize(bytes, target));
+	EXPECT_TRUE(target.isEmpty());
+}
+
+TEST(MapIO, VersionThreeFilesStillLoad)
+{
+	// Version 3 had no rendering options: they read as the defaults.
+	CEvidentialGridMap2D original = conflictingMap();
+	original.renderingOptions.style = RenderStyle::Masses;
+	original.renderingOptions.height = 2.0;
+	CEvidentialGridMap2D back;
+	deserialize(asVersion3(original), back);
+	original.renderingOptions = CEvidentialGridMap2D::TRenderingOptions();
+	expectSameMap(original, back);
+}
+
+TEST(MapIO, VersionTwoFilesStillLoad)
+{
+	// Version 2 had no cloud options: they read as the defaults, and the
+	// rest as it was.
+	CEvidentialGridMap2D original = conflictingMap();
+	original.insertionOptions.groundRemoval = GroundRemoval::None;
+	original.insertionOptions.maxObstacleHeight = 4.0;
+	CEvidentialGridMap2D back;
+	deserialize(asVersion2(original), back);
+	const CEvidentialGridMap2D::TInsertionOptions defaults;
+	EXPECT_EQ(back.insertionOptions.groundRemoval, defaults.groundRemoval);
+	EXPECT_EQ(back.insertionOptions.minObstacleHeight, defaults.minObstacleHeight);
+	EXPECT_EQ(back.insertionOptions.maxObstacleHeight, defaults.maxObstacleHeight);
+	EXPECT_EQ(back.insertionOptions.groundReturns, defaults.groundReturns);
+	original.insertionOptions.groundRemoval = defaults.groundRemoval;
+	original.insertionOptions.maxObstacleHeight = defaults.maxObstacleHeight;
+	expectSameMap(original, back);
+}
+
+TEST(MapIO, VersionOneFilesStillLoad)
+{
+	// Version 1 had no free margin, no motion layer and cells that always
+	// kept conflict. A map that keeps conflict reads back as it was, with
+	// freeMargin 0 (what it was built with); its cells that lean occupied
+	// are taken to have held impacts, as the likelihood field needs.
+	const CEvidentialGridMap2D original = conflictingMap();
+	ASSERT_GT(original.countDecisions().conflict, 0u);
+	CEvidentialGridMap2D back;
+	deserialize(asVersion1(original), back);
+	EXPECT_TRUE(back.storage().keepsConflict());
+	EXPECT_EQ(back.insertionOptions.freeMargin, 0.0);
+	const std::size_t cells = original.geometry().cellCount();
+	ASSERT_EQ(back.geometry().cellCount(), cells);
+	for (std::size_t i = 0; i < cells; ++i)
+	{
+		ASSERT_EQ(back.storage().read(i), original.storage().read(original.geometry().indexOfPacked(i))) << i;
+		const Mass m = back.storage().read(i);
+		ASSERT_EQ(back.storage().heldImpact(i), m.occupied > m.free) << i;
+	}
+
+	// A map of another conflict handling loses its (rounding-level)
+	// conflict and gets a motion layer, with no event yet.
+	CEvidentialGridMap2D other = conflictingMap();
+	other.insertionOptions.conflictHandling = ConflictHandling::Normalize;
+	CEvidentialGridMap2D motion;
+	deserialize(asVersion1(other), motion);
+	EXPECT_FALSE(motion.storage().keepsConflict());
+	for (std::size_t i = 0; i < cells; ++i)
+	{
+		const Mass m = motion.storage().read(i);
+		ASSERT_EQ(m.conflict, 0.0);
+		ASSERT_MASS_NEAR_AT(m, normalized(original.storage().read(original.geometry().indexOfPacked(i))), 2e-4, i, 0);
+		ASSERT_EQ(motion.storage().event(i), CellEvent::None);
+	}
+}
+
+TEST(MapIO, VersionZeroFilesStillLoad)
+{
+	// Version 0 stored m(empty), m(F) and m(O) themselves in the cells;
+	// version 1 the conflict and the normal part (issue 14), in the same
+	// layout. A map with conflict, written as version 0 would have written
+	// it, reads back with the same masses within the two formats' roundings.
+	const CEvidentialGridMap2D original = conflictingMap();
+	ASSERT_GT(original.countDecisions().conflict, 0u);
+
+	auto bytes = asVersion1(original);
+	const std::size_t versionPos = 1 + (bytes[0] & 0x7F);
+	bytes[versionPos] = 0;
+	const std::size_t cells = original.geometry().cellCount();
+	const std::size_t first = bytes.size() - 9 - 8 * cells;  // checksum, end marker
+	const auto put = [&](std::size_t at, double v) {
+		putLE(bytes, at, quantizeMass(v), 2);
+	};
+	for (std::size_t i = 0; i < cells; ++i)
+	{
+		// Version 0's cell: the masses rounded, the stamp as it was. These
+		// masses round to values that never pass the scale together.
+		const Mass m = decodeMass(original.storage().packedCells()[i]);
+		put(first + 8 * i, m.conflict);
+		put(first + 8 * i + 2, m.free);
+		put(first + 8 * i + 4, m.occupied);
+	}
+	reseal(bytes);
+	CEvidentialGridMap2D back;
+	deserialize(bytes, back);
+	ASSERT_EQ(back.geometry().cellCount(), cells);
+	for (std::size_t i = 0; i < cells; ++i)
+		ASSERT_MASS_NEAR_AT(
+			back.storage().read(i), original.storage().read(original.geometry().indexOfPacked(i)), 2.0 / kMassScale, i,
+			0);
+
+	// A version-0 cell whose masses pass 1 together is refused, as before.
+	putLE(bytes, first, 40000, 2);
+	putLE(bytes, first + 2, 40000, 2);
+	reseal(bytes);
+	CEvidentialGridMap2D refused;
+	EXPECT_ANY_THROW(deserialize(bytes, refused));
+}
