@@ -8,203 +8,38 @@
  * the program cannot rot); timings from it mean nothing. */
 
 #include <benchmark/benchmark.h>
-#include <mrpt/core/Clock.h>
-#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
-#include <mrpt/obs/CRawlog.h>
-#include <mrpt/obs/stock_observations.h>
 #include <mrpt/poses/CPose3D.h>
-#include <mrpt/serialization/CArchive.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 #include "insert/PolarToCartesian.h"
 
-#include "../tests/support/scans.h"
 #include "CloudCases.h"
 #include "RatioReport.h"
+#include "ScanInputs.h"
 #include "TransformLoop.h"
 
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <map>
 #include <memory>
-#include <random>
 #include <string>
 #include <vector>
 
 using mrpt::obs::CObservation2DRangeScan;
 using mrpt::poses::CPose3D;
 using namespace mrpt_evidential;
+using namespace bench;
 
 namespace
 {
 bool smoke = false;
-/** Insertions per case, as mrpt-performance's grid test does. */
-constexpr int kInsertions = 2000;
 /** Runs per case (but a whole path), each of kInsertions insertions or of
  * kCallSeconds of calls: each run starts from a fresh map, so that a run
  * holds as many first writes to a cell as a single run would. */
 constexpr int kRepetitions = 3;
 constexpr double kCallSeconds = 0.5;
-
-#ifndef MRPT_DATASETS_DIR
-#define MRPT_DATASETS_DIR "/usr/share/mrpt/datasets"
-#endif
-
-// ---------------------------------------------------------------------------
-// Inputs, shared by every case
-// ---------------------------------------------------------------------------
-
-enum class ScanKind
-{
-	Stock,	//!< MRPT's example scan: 361 rays over 180 degrees
-	Sena,  //!< the SENA rawlog's real scans, in turn
-	Wide  //!< synthetic: 1081 rays over 270 degrees, ranges up to 30 m
-};
-const char* name(ScanKind k)
-{
-	switch (k)
-	{
-		case ScanKind::Stock: return "stock";
-		case ScanKind::Sena: return "sena";
-		case ScanKind::Wide: return "wide";
-	}
-	return "";
-}
-
-/** The scans of a kind; the insertion loop cycles through them. */
-const std::vector<CObservation2DRangeScan>& scans(ScanKind kind)
-{
-	static std::map<ScanKind, std::vector<CObservation2DRangeScan>> cache;
-	auto& out = cache[kind];
-	if (!out.empty()) return out;
-	if (kind == ScanKind::Stock)
-	{
-		out.emplace_back();
-		mrpt::obs::stock_observations::example2DRangeScan(out.back());
-	}
-	else if (kind == ScanKind::Wide)
-	{
-		// A sensor in a 37 x 27 m hall, off its centre: ranges 7 to 30 m.
-		const auto setup = test::ScanSetup().aperture(1.5 * M_PI).maxRange(30.0);
-		out.push_back(test::scanByAngle(1081, setup, [](double a) {
-			const double c = std::cos(a), d = std::sin(a);
-			const double tx = c > 0 ? 25.0 / c : (c < 0 ? -12.0 / c : HUGE_VAL);
-			const double ty = d > 0 ? 18.0 / d : (d < 0 ? -9.0 / d : HUGE_VAL);
-			return std::min({tx, ty, 29.9});
-		}));
-	}
-	else
-	{
-		mrpt::io::CFileGZInputStream file(
-			std::string(MRPT_DATASETS_DIR) +
-			"/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog");
-		auto archive = mrpt::serialization::archiveFrom(file);
-		mrpt::obs::CActionCollection::Ptr actions;
-		mrpt::obs::CSensoryFrame::Ptr frame;
-		mrpt::obs::CObservation::Ptr obs;
-		std::size_t entry = 0;
-		while (mrpt::obs::CRawlog::getActionObservationPairOrObservation(
-			archive, actions, frame, obs, entry))
-			if (frame)
-				for (const auto& o : *frame)
-					if (auto scan =
-							std::dynamic_pointer_cast<CObservation2DRangeScan>(o))
-						out.push_back(*scan);
-	}
-	return out;
-}
-
-/** The same maximum range for both maps. */
-double maxRangeOf(ScanKind kind) { return kind == ScanKind::Wide ? 30.0 : 15.0; }
-/** Half-size of the square map, metres, enough for the scans at every pose. */
-double halfSizeOf(ScanKind kind) { return kind == ScanKind::Wide ? 40.0 : 20.0; }
-
-/** kInsertions robot poses within 1 m of the origin, any heading (fixed
- * seed). */
-const std::vector<CPose3D>& poses()
-{
-	static const std::vector<CPose3D> out = [] {
-		std::mt19937 rng(2026);
-		std::uniform_real_distribution<double> xy(-1.0, 1.0), yaw(-M_PI, M_PI);
-		std::vector<CPose3D> p;
-		for (int i = 0; i < kInsertions; ++i)
-			p.emplace_back(xy(rng), xy(rng), 0.0, yaw(rng), 0.0, 0.0);
-		return p;
-	}();
-	return out;
-}
-
-/** The scan to insert at step i, timestamped 0.1 s after the previous. */
-CObservation2DRangeScan scanAt(ScanKind kind, std::size_t i)
-{
-	const auto& all = scans(kind);
-	CObservation2DRangeScan s = all[i % all.size()];
-	s.timestamp = mrpt::Clock::fromDouble(1000.0 + 0.1 * static_cast<double>(i));
-	return s;
-}
-
-/** Half-size of a square map that holds a scan of range `maxRange`
- * anywhere within 1 m of the origin. */
-double halfSizeFor(ScanKind kind, double maxRange)
-{
-	return std::max(halfSizeOf(kind), maxRange + 2.0);
-}
-
-/** `maxRange` 0: the kind's. */
-std::unique_ptr<mrpt::maps::COccupancyGridMap2D> mrptMap(
-	ScanKind kind, double resolution, bool widening, double maxRange = 0)
-{
-	const double range = maxRange > 0 ? maxRange : maxRangeOf(kind);
-	const double h = halfSizeFor(kind, range);
-	auto map = std::make_unique<mrpt::maps::COccupancyGridMap2D>(
-		-h, h, -h, h, resolution);
-	map->insertionOptions.maxDistanceInsertion = static_cast<float>(range);
-	map->insertionOptions.wideningBeamsWithDistance = widening;
-	return map;
-}
-
-/** What a case sets; the settings of the sweep keep the map's defaults
- * unless given (0). */
-struct OurOptions
-{
-	SensorModel model = SensorModel::ReinforcedMultiEcho;
-	FusionRule rule = FusionRule::Conjunctive;
-	bool decay = true;
-	double maxRange = 0, muF = 0, muO = 0, sectorWidthDegrees = 0;
-	unsigned threads = 1;
-	ConflictHandling handling = ConflictHandling::Normalize;
-};
-
-std::unique_ptr<CEvidentialGridMap2D> ourMap(
-	ScanKind kind, double resolution, const OurOptions& o, double halfSize = 0)
-{
-	const double range = o.maxRange > 0 ? o.maxRange : maxRangeOf(kind);
-	const double h = halfSize > 0 ? halfSize : halfSizeFor(kind, range);
-	auto map = std::make_unique<CEvidentialGridMap2D>(-h, h, -h, h, resolution);
-	map->setMaxCells(std::max<std::size_t>(map->geometry().cellCount(), 100'000'000));
-	auto& io = map->insertionOptions;
-	io.sensorModel = o.model;
-	io.fusionRule = o.rule;
-	io.imprecision = o.model == SensorModel::ImpreciseMultiEcho ? resolution : 0.0;
-	io.decayRate = o.decay ? 0.01 : 0.0;
-	io.maxRange = range;
-	if (o.muF > 0) io.muF = o.muF;
-	if (o.muO > 0) io.muO = o.muO;
-	if (o.sectorWidthDegrees > 0) io.sectorWidth = o.sectorWidthDegrees * M_PI / 180.0;
-	io.insertionThreads = o.threads;
-	io.conflictHandling = o.handling;
-	return map;
-}
-
-std::string label(ScanKind kind, double resolution)
-{
-	char s[64];
-	std::snprintf(s, sizeof(s), "%s/%.2fm", name(kind), resolution);
-	return s;
-}
 
 // ---------------------------------------------------------------------------
 // Cases
