@@ -12,6 +12,7 @@
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <vector>
 
