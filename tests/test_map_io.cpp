@@ -34,14 +34,17 @@
 using namespace mrpt_evidential;
 using mrpt_evidential::test::deserialize;
 using mrpt_evidential::test::expectSameMap;
+using mrpt_evidential::test::firstCellPosition;
 using mrpt_evidential::test::kMapFileRays;
 using mrpt_evidential::test::kMapFileScans;
 using mrpt_evidential::test::largestAllocation;
 using mrpt_evidential::test::mapWithEveryOption;
+using mrpt_evidential::test::payloadStart;
 using mrpt_evidential::test::putLE;
 using mrpt_evidential::test::reseal;
 using mrpt_evidential::test::resetLargestAllocation;
 using mrpt_evidential::test::serialize;
+using mrpt_evidential::test::versionPosition;
 using mrpt_evidential::test::wall;
 using mrpt::poses::CPose3D;
 using mrpt::serialization::archiveFrom;
@@ -196,8 +199,7 @@ TEST(MapIO, OptionsThatTheGridCannotInsertWithAreRejected)
 TEST(MapIO, UnknownVersionIsRejected)
 {
 	auto bytes = serialize(mapWithEveryOption(0.3));
-	// MRPT's object header: 0x80 | name length, the class name, the version.
-	const std::size_t versionPos = 1 + (bytes[0] & 0x7F);
+	const std::size_t versionPos = versionPosition(bytes);
 	ASSERT_EQ(bytes[versionPos], 5);
 	for (const std::uint8_t v : {6, 7, 0x7F, 0xFF})
 	{
@@ -213,7 +215,7 @@ TEST(MapIO, HugeSizeIsRejectedBeforeAllocating)
 	// sizeX and sizeY as large as an int32 allows: rejected from the header
 	// (the message names the budget), not by a failed 32 EB allocation.
 	auto bytes = serialize(mapWithEveryOption(0.3));
-	const std::size_t geometryPos = 1 + (bytes[0] & 0x7F) + 1;
+	const std::size_t geometryPos = payloadStart(bytes);
 	for (std::size_t i = 0; i < 8; ++i)
 		bytes[geometryPos + 24 + i] = (i % 4 == 3) ? 0x7F : 0xFF;
 	CEvidentialGridMap2D target;
@@ -280,7 +282,7 @@ TEST(BadFile, ForgedHugeGridAllocatesOnlyWhatTheStreamHolds)
 	auto bytes = serialize(CEvidentialGridMap2D(0, 1, 0, 1, 0.5));
 	// After MRPT's header: f64 xMin, yMin, resolution, i32 sizeX, sizeY,
 	// u64 maxCells (little-endian).
-	const std::size_t geometry = 1 + (bytes[0] & 0x7F) + 1;
+	const std::size_t geometry = payloadStart(bytes);
 	putLE(bytes, geometry + 24, 30'000, 4);
 	putLE(bytes, geometry + 28, 30'000, 4);
 	putLE(bytes, geometry + 32, 900'000'000, 8);
@@ -323,9 +325,9 @@ TEST(BadFile, ResealedStreamsStillPassTheChecks)
 		deserialize(bytes, back);
 		EXPECT_EQ(back.insertionCount(), 2u);
 	}
-	const std::size_t geometry = 1 + (good[0] & 0x7F) + 1;
+	const std::size_t geometry = payloadStart(good);
 	const std::size_t cells = static_cast<std::size_t>(map.getSizeX() * map.getSizeY());
-	const std::size_t insertions = good.size() - 9 - cells * 8 - 17;
+	const std::size_t insertions = firstCellPosition(good, cells) - 17;
 	struct Forgery
 	{
 		const char* what;

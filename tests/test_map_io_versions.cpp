@@ -18,25 +18,52 @@
 using namespace mrpt_evidential;
 using mrpt_evidential::test::deserialize;
 using mrpt_evidential::test::expectSameMap;
+using mrpt_evidential::test::firstCellPosition;
 using mrpt_evidential::test::kMapFileScans;
 using mrpt_evidential::test::mapWithEveryOption;
+using mrpt_evidential::test::payloadStart;
 using mrpt_evidential::test::putLE;
 using mrpt_evidential::test::reseal;
 using mrpt_evidential::test::serialize;
+using mrpt_evidential::test::versionPosition;
 using mrpt::poses::CPose3D;
 
 namespace
 {
+/** The layout of the insertion options in a map's stream, in bytes from
+ * their start (the io source's order): freeMargin after invalidRangesAsFree,
+ * the motion options after growthMargin, the cloud options after them. */
+constexpr std::size_t kFreeMarginAt = 1 + 8 + 8 + 8 + 1 + 8 + 8 + 1;
+constexpr std::size_t kMotionAt = kFreeMarginAt + 8 + 1 + 8 + 8 + 1 + 8;
+constexpr std::size_t kMotionBytes = 8 + 8 + 8;
+constexpr std::size_t kCloudsAt = kMotionAt + kMotionBytes;
 /** groundRemoval, minObstacleHeight, maxObstacleHeight, groundReturns. */
 constexpr std::size_t kCloudOptionBytes = 1 + 8 + 8 + 1;
+/** The likelihood and rendering options, whole. */
+constexpr std::size_t kLikelihoodBytes = 6 * 8 + 4 + 1;
+constexpr std::size_t kRenderingBytes = 1 + 6 * 3 + 5 + 8;
+
+/** Where the insertion options begin: after the geometry (xMin, yMin,
+ * resolution, sizeX, sizeY: 32 bytes) and maxCells. */
+std::size_t insertionStart(const std::vector<std::uint8_t>& bytes)
+{
+	return payloadStart(bytes) + 32 + 8;
+}
+
+/** Takes n bytes out at `at`. */
+void cut(std::vector<std::uint8_t>& bytes, std::size_t at, std::size_t n)
+{
+	bytes.erase(
+		bytes.begin() + static_cast<std::ptrdiff_t>(at),
+		bytes.begin() + static_cast<std::ptrdiff_t>(at + n));
+}
 
 /** Index in `bytes` (a serialized map) of the high byte of the stamp of the
  * cell numbered `packed` (cx + sizeX cy). */
 std::size_t stampHighByte(
 	const std::vector<std::uint8_t>& bytes, const CEvidentialGridMap2D& map, std::size_t packed)
 {
-	const std::size_t firstCell = bytes.size() - 9 - 8 * map.geometry().cellCount();
-	return firstCell + 8 * packed + 7;
+	return firstCellPosition(bytes, map.geometry().cellCount()) + 8 * packed + 7;
 }
 
 /** The map as version 4 wrote it: the same layout, no cell marked as one
@@ -44,8 +71,7 @@ std::size_t stampHighByte(
 std::vector<std::uint8_t> asVersion4(const CEvidentialGridMap2D& map)
 {
 	std::vector<std::uint8_t> bytes = serialize(map);
-	const std::size_t header = 1 + (bytes[0] & 0x7F) + 1;
-	bytes[header - 1] = 4;
+	bytes[versionPosition(bytes)] = 4;
 	for (std::size_t i = 0; i < map.geometry().cellCount(); ++i)
 		bytes[stampHighByte(bytes, map, i)] &= 0x7F;
 	reseal(bytes);
@@ -53,49 +79,35 @@ std::vector<std::uint8_t> asVersion4(const CEvidentialGridMap2D& map)
 }
 
 /** The map as version 3 wrote it: no rendering options after the
- * likelihood options (offsets of the layout in the io source). */
+ * likelihood options. */
 std::vector<std::uint8_t> asVersion3(const CEvidentialGridMap2D& map)
 {
 	std::vector<std::uint8_t> bytes = asVersion4(map);
-	const std::size_t header = 1 + (bytes[0] & 0x7F) + 1;
-	bytes[header - 1] = 3;
-	const std::size_t insertionBytes = 1 + 8 + 8 + 8 + 1 + 8 + 8 + 1 + 8 + 1 + 8 + 8 + 1 +
-		8 + 24 + kCloudOptionBytes;
-	const std::size_t likelihoodBytes = 6 * 8 + 4 + 1;
-	const std::size_t rendering = header + 32 + 8 + insertionBytes + likelihoodBytes;
-	const std::size_t renderingBytes = 1 + 6 * 3 + 5 + 8;
-	bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(rendering),
-				bytes.begin() + static_cast<std::ptrdiff_t>(rendering + renderingBytes));
+	bytes[versionPosition(bytes)] = 3;
+	cut(bytes, insertionStart(bytes) + kCloudsAt + kCloudOptionBytes + kLikelihoodBytes,
+		kRenderingBytes);
 	reseal(bytes);
 	return bytes;
 }
 
 /** The bytes version 1 would have written for `map` (whose stamp table fits
- * version 1): today's layout without freeMargin, the motion options and
+ * version 1): version 3's layout without freeMargin, the motion options and
  * keepsConflict, and stamps without their impact flag. */
 std::vector<std::uint8_t> asVersion1(const CEvidentialGridMap2D& map)
 {
 	std::vector<std::uint8_t> bytes = asVersion3(map);
-	const std::size_t header = 1 + (bytes[0] & 0x7F) + 1;
-	bytes[header - 1] = 1;
+	bytes[versionPosition(bytes)] = 1;
 	const std::size_t cells = map.geometry().cellCount();
-	const std::size_t firstCell = bytes.size() - 9 - 8 * cells;
+	const std::size_t firstCell = firstCellPosition(bytes, cells);
 	for (std::size_t i = 0; i < cells; ++i)
 		bytes[firstCell + 8 * i + 7] &= 0x3F;  // the stamp's flag bits
 	// From the back, so that the positions in front stay put: keepsConflict
-	// before the cells, the motion options after growthMargin, freeMargin
-	// after invalidRangesAsFree (offsets of the layout in the io source).
-	bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(firstCell - 1));
-	const std::size_t insertion = header + 32 + 8;
-	const std::size_t freeMargin = insertion + 1 + 8 + 8 + 8 + 1 + 8 + 8 + 1;
-	const std::size_t motion = freeMargin + 8 + 1 + 8 + 8 + 1 + 8;
-	const auto cut = [&](std::size_t at, std::size_t n) {
-		bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(at),
-					bytes.begin() + static_cast<std::ptrdiff_t>(at + n));
-	};
-	cut(motion + 24, kCloudOptionBytes);
-	cut(motion, 24);
-	cut(freeMargin, 8);
+	// just before the cells, then the insertion options'.
+	cut(bytes, firstCell - 1, 1);
+	const std::size_t insertion = insertionStart(bytes);
+	cut(bytes, insertion + kCloudsAt, kCloudOptionBytes);
+	cut(bytes, insertion + kMotionAt, kMotionBytes);
+	cut(bytes, insertion + kFreeMarginAt, 8);
 	reseal(bytes);
 	return bytes;
 }
@@ -105,13 +117,8 @@ std::vector<std::uint8_t> asVersion1(const CEvidentialGridMap2D& map)
 std::vector<std::uint8_t> asVersion2(const CEvidentialGridMap2D& map)
 {
 	std::vector<std::uint8_t> bytes = asVersion3(map);
-	const std::size_t header = 1 + (bytes[0] & 0x7F) + 1;
-	bytes[header - 1] = 2;
-	const std::size_t insertion = header + 32 + 8;
-	const std::size_t clouds = insertion + 1 + 8 + 8 + 8 + 1 + 8 + 8 + 1 + 8 + 1 + 8 + 8 +
-		1 + 8 + 24;
-	bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(clouds),
-				bytes.begin() + static_cast<std::ptrdiff_t>(clouds + kCloudOptionBytes));
+	bytes[versionPosition(bytes)] = 2;
+	cut(bytes, insertionStart(bytes) + kCloudsAt, kCloudOptionBytes);
 	reseal(bytes);
 	return bytes;
 }
@@ -238,10 +245,9 @@ TEST(MapIO, VersionZeroFilesStillLoad)
 	ASSERT_GT(original.countDecisions().conflict, 0u);
 
 	auto bytes = asVersion1(original);
-	const std::size_t versionPos = 1 + (bytes[0] & 0x7F);
-	bytes[versionPos] = 0;
+	bytes[versionPosition(bytes)] = 0;
 	const std::size_t cells = original.geometry().cellCount();
-	const std::size_t first = bytes.size() - 9 - 8 * cells;  // checksum, end marker
+	const std::size_t first = firstCellPosition(bytes, cells);
 	const auto put = [&](std::size_t at, double v) {
 		putLE(bytes, at, quantizeMass(v), 2);
 	};

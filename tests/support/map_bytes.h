@@ -39,12 +39,34 @@ inline void deserialize(
 	mrpt::serialization::archiveFrom(buf) >> map;
 }
 
+/** Where the version byte of a serialized map lies: MRPT's object header is
+ * 0x80 | the class name's length, the class name, the version. */
+inline std::size_t versionPosition(const std::vector<std::uint8_t>& bytes)
+{
+	return 1 + (bytes[0] & 0x7F);
+}
+/** Where the map's payload (its geometry first) begins: after the header. */
+inline std::size_t payloadStart(const std::vector<std::uint8_t>& bytes)
+{
+	return versionPosition(bytes) + 1;
+}
+/** Where the checksum lies: before MRPT's one-byte end marker. */
+inline std::size_t checksumPosition(const std::vector<std::uint8_t>& bytes)
+{
+	return bytes.size() - 9;
+}
+/** Where the first of the map's `cells` 8-byte cells lies: the cells come
+ * last, before the checksum. */
+inline std::size_t firstCellPosition(const std::vector<std::uint8_t>& bytes, std::size_t cells)
+{
+	return checksumPosition(bytes) - 8 * cells;
+}
+
 /** Writes the checksum a stream's payload should have, as a forger would:
- * over everything between MRPT's header (class name and version) and the
- * checksum, which precedes MRPT's one-byte end marker. */
+ * over everything between MRPT's header and the checksum. */
 inline void reseal(std::vector<std::uint8_t>& bytes)
 {
-	const std::size_t begin = 1 + (bytes[0] & 0x7F) + 1, end = bytes.size() - 9;
+	const std::size_t begin = payloadStart(bytes), end = checksumPosition(bytes);
 	const std::uint64_t h = payloadChecksum(bytes.data() + begin, end - begin);
 	for (int i = 0; i < 8; ++i) bytes[end + i] = static_cast<std::uint8_t>(h >> (8 * i));
 }
