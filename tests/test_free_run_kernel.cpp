@@ -14,8 +14,11 @@ using namespace mrpt_evidential;
 namespace
 {
 /** A grid without conflict whose cells hold random masses, stamps of several
- * insertions, impact flags and events of every kind. */
-EvidentialGridStorage gridWithVariedCells(double decayRate, std::uint32_t seed)
+ * insertions, impact flags and events of every kind. `mostlyQuiet`: few
+ * cells are loud (little occupied mass, events rare), as in the free space
+ * of a real scan, where the bulk kernels' whole blocks do the work. */
+EvidentialGridStorage gridWithVariedCells(
+	double decayRate, std::uint32_t seed, bool mostlyQuiet = false)
 {
 	EvidentialGridStorage g;
 	g.reset(0.0, 4.0, 0.0, 1.0, 0.1, 1000);
@@ -30,11 +33,12 @@ EvidentialGridStorage gridWithVariedCells(double decayRate, std::uint32_t seed)
 		for (std::size_t idx = 0; idx < g.geometry().cellCount(); ++idx)
 		{
 			if (unit(rng) < 0.5) continue;
-			const double f = unit(rng), o = unit(rng) * (1.0 - f) * (unit(rng) < 0.3 ? 1.0 : 0.1);
+			const double occupiedShare = mostlyQuiet ? 0.02 : (unit(rng) < 0.3 ? 1.0 : 0.1);
+			const double f = unit(rng), o = unit(rng) * (1.0 - f) * occupiedShare;
 			g.write(idx, Mass{0.0, f, o, 1.0 - f - o});
 			if (unit(rng) < 0.2) g.markImpact(idx);
 			if (unit(rng) < 0.2) g.markFlipped(idx);
-			const double e = unit(rng);
+			const double e = unit(rng) * (mostlyQuiet ? 10.0 : 1.0);
 			if (e < 0.1) g.setEvent(idx, CellEvent::Appeared);
 			else if (e < 0.2) g.setEvent(idx, CellEvent::Leaving);
 			else if (e < 0.3) g.setEvent(idx, CellEvent::Disappeared);
@@ -42,6 +46,32 @@ EvidentialGridStorage gridWithVariedCells(double decayRate, std::uint32_t seed)
 	}
 	g.beginInsertion(106.0);
 	return g;
+}
+/** Fuses w into [first, first + count) of `bulk` as one quiet run and into
+ * the same cells of `oneByOne` cell by cell; fails unless both give the same
+ * cells bit for bit (loud cells untouched) and list the same loud cells.
+ * Returns how many were loud. */
+std::size_t expectQuietRunAsCellByCell(
+	EvidentialGridStorage& bulk, EvidentialGridStorage& oneByOne, bool decays,
+	std::size_t first, std::size_t count, float w, std::uint16_t occupiedBelow)
+{
+	std::vector<std::size_t> loud, expectedLoud;
+	if (decays)
+		bulk.fuseQuietFreeRun<true>(first, count, w, occupiedBelow, loud);
+	else
+		bulk.fuseQuietFreeRun<false>(first, count, w, occupiedBelow, loud);
+	for (std::size_t idx = first; idx < first + count; ++idx)
+	{
+		if (oneByOne.isLoud(idx, occupiedBelow))
+			expectedLoud.push_back(idx);
+		else if (decays)
+			oneByOne.fuseSimpleFree<true, false>(idx, w);
+		else
+			oneByOne.fuseSimpleFree<false, false>(idx, w);
+	}
+	EXPECT_EQ(loud, expectedLoud) << decays << " " << first << " " << count;
+	EXPECT_TRUE(bulk.cells() == oneByOne.cells()) << decays << " " << first << " " << count;
+	return loud.size();
 }
 }  // namespace
 
@@ -53,29 +83,33 @@ TEST(GridStorage, QuietFreeRunsFuseAsCellByCellAndListTheLoudInOrder)
 			{
 				EvidentialGridStorage bulk = gridWithVariedCells(rate, 7);
 				EvidentialGridStorage oneByOne = gridWithVariedCells(rate, 7);
-				const float w = 0.37f;
-				const std::uint16_t occupiedBelow = 20000;
-				std::vector<std::size_t> loud, expectedLoud;
-				if (rate > 0.0)
-					bulk.fuseQuietFreeRun<true>(first, count, w, occupiedBelow, loud);
-				else
-					bulk.fuseQuietFreeRun<false>(first, count, w, occupiedBelow, loud);
-				for (std::size_t idx = first; idx < first + count; ++idx)
-				{
-					if (oneByOne.isLoud(idx, occupiedBelow))
-						expectedLoud.push_back(idx);
-					else if (rate > 0.0)
-						oneByOne.fuseSimpleFree<true, false>(idx, w);
-					else
-						oneByOne.fuseSimpleFree<false, false>(idx, w);
-				}
-				ASSERT_EQ(loud, expectedLoud) << rate << " " << first << " " << count;
-				// Bit for bit, loud cells untouched.
-				ASSERT_TRUE(bulk.cells() == oneByOne.cells()) << rate << " " << first << " " << count;
+				const std::size_t loud =
+					expectQuietRunAsCellByCell(bulk, oneByOne, rate > 0.0, first, count, 0.37f, 20000);
 				if (count >= 200)
 				{
-					EXPECT_GT(loud.size(), 10u);
-					EXPECT_LT(loud.size(), count / 2);
+					EXPECT_GT(loud, 10u);
+					EXPECT_LT(loud, count / 2);
+				}
+			}
+}
+
+// Blocks of eight cells without a loud one, which processors with AVX2 fuse
+// in one step, and the blocks of four around a loud cell.
+TEST(GridStorage, LongQuietRunsFuseAsCellByCell)
+{
+	for (const double rate : {0.0, 0.05})
+		for (std::size_t first = 0; first < 9; ++first)
+			for (const std::size_t count : {8, 12, 15, 16, 17, 31, 200, 391})
+			{
+				EvidentialGridStorage bulk = gridWithVariedCells(rate, 11, true);
+				EvidentialGridStorage oneByOne = gridWithVariedCells(rate, 11, true);
+				// n(O) of 2000 is above the 0.02 of the scale these cells hold.
+				const std::size_t loud =
+					expectQuietRunAsCellByCell(bulk, oneByOne, rate > 0.0, first, count, 0.61f, 2000);
+				if (count >= 200)
+				{
+					EXPECT_GT(loud, 0u);
+					EXPECT_LT(loud, count / 8);
 				}
 			}
 }

@@ -53,7 +53,7 @@ allow "$(ls $lib/include/mrpt_evidential/*.h)" \
 forbid "$(ls $lib/include/mrpt_evidential/*.h $lib/include/mrpt_evidential/*/*.h)" \
   "<mrpt_evidential/support/" "public headers: not the support target"
 allow "$(ls $lib/src/grid/*)" \
-  "^#include ($std|$algebra|$vocabulary|$support|<mrpt_evidential/grid/)" "grid sources"
+  "^#include ($std|$algebra|$vocabulary|$support|<mrpt_evidential/grid/|\"grid/)" "grid sources"
 allow "$(ls $lib/src/scan/*)" \
   "^#include ($std|$algebra|$vocabulary|$support|<mrpt/|<mrpt_evidential/scan/|\"scan/)" "scan sources"
 allow "$(ls $lib/src/cloud/*)" \

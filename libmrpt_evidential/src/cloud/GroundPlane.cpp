@@ -2,6 +2,8 @@
 
 #include "cloud/GroundPlane.h"
 
+#include <mrpt_evidential/support/CpuClones.h>
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -100,7 +102,7 @@ TGroundPlane refine(
 }
 }  // namespace
 
-std::optional<TGroundPlane> fitGroundPlane(
+MRPT_EVIDENTIAL_CPU_CLONES std::optional<TGroundPlane> fitGroundPlane(
 	const std::vector<mrpt::math::TPoint3Df>& points, const TGroundFit& fit)
 {
 	// Ground can only be low: below the sensor by the mounting heights, give

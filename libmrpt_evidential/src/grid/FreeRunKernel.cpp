@@ -1,13 +1,16 @@
 /* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
  * EvidentialGridStorage::fuseQuietFreeRun() and fuseFreeRunKeepingConflict():
  * the bulk of a scan's cells, four cells at a time with SSE2 where the
- * target has it. The compiler vectorizes fuseSimpleFree() itself, but spends
+ * target has it (eight with AVX2 for the quiet runs, FreeRunKernelAvx2.cpp,
+ * where the processor has it). The compiler vectorizes fuseSimpleFree() itself, but spends
  * most of the time taking the 16-bit fields of the 8-byte cells apart and
  * together again; here each field is moved once. Results are bit for bit
  * those of fuseSimpleFree() (same float operations in the same order), which
  * stays the code for the tail of a run and for targets without SSE2. */
 
 #include <mrpt_evidential/grid/EvidentialGridStorage.h>
+
+#include "grid/FreeRunKernelAvx2.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -103,8 +106,18 @@ void EvidentialGridStorage::fuseQuietFreeRun(
 				  judged = _mm_set1_epi32(kEventJudgedWhenSeenFree),
 				  occupiedLimit = _mm_set1_epi32(static_cast<int>(occupiedBelow) - 1),
 				  ceilingWord = _mm_set1_epi32(m_ceiling), zero = _mm_setzero_si128();
+	// Eight cells at a time where the processor has AVX2; this loop takes
+	// the blocks of four that hold a loud cell, and the rest.
+	const bool eight = detail::hasAvx2Kernel();
+	const detail::TQuietRun run{
+		w, m_ceiling, m_currentStamp, occupiedBelow, m_presentGain, m_stampGain.data()};
 	for (; idx + 4 <= end; idx += 4)
 	{
+		if (eight)
+		{
+			idx = detail::fuseQuietBlocksOfEight<Decays>(m_cells.data(), idx, end, run);
+			if (idx + 4 > end) break;
+		}
 		QuantizedCell* c = &m_cells[idx];
 		const TLanes in = loadFour(c);
 		// isLoud() on four cells.

@@ -4,6 +4,7 @@
 
 #include <mrpt_evidential/scan/CPolarSourceGrid.h>
 #include <mrpt_evidential/support/FastArcTangent.h>
+#include <mrpt_evidential/support/CpuClones.h>
 #include <mrpt_evidential/grid/EvidentialGridStorage.h>
 
 #include <algorithm>
@@ -189,7 +190,7 @@ class CPolarToCartesian
 	 * for those cells' memory in time. */
 	TRows prepareRows(const GridGeometry& grid);
 	template <typename VisitMixed, typename VisitUniform, typename Ahead>
-	void visitRows(
+	MRPT_EVIDENTIAL_CPU_CLONES void visitRows(
 		const GridGeometry& grid, int first, int last, VisitMixed&& visitMixed,
 		VisitUniform&& visitUniform, Ahead&& ahead) const;
 	/** How many rows ahead visitRows() announces a row's spans (2 to 4

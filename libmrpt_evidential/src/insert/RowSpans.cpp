@@ -36,7 +36,7 @@ void sortCrossings(double* first, double* last)
 }
 }  // namespace
 
-void CPolarToCartesian::RowSpans::fill(
+MRPT_EVIDENTIAL_CPU_CLONES void CPolarToCartesian::RowSpans::fill(
 	const std::vector<double>& polygon, const GridGeometry& grid, int first,
 	int last)
 {

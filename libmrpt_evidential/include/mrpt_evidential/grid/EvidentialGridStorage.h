@@ -265,7 +265,8 @@ class EvidentialGridStorage
 	/** fuseSimpleFree<Decays, false>() (a grid without conflict) into every
 	 * quiet cell of [first, first + count) (see isLoud()); loud cells are
 	 * left unfused, their indices appended to `loud` in order. Four cells at
-	 * a time where the target has SSE2, with the same results. */
+	 * a time where the target has SSE2, eight where the processor has AVX2,
+	 * with the same results. */
 	template <bool Decays>
 	void fuseQuietFreeRun(
 		std::size_t first, std::size_t count, float w, std::uint16_t occupiedBelow,

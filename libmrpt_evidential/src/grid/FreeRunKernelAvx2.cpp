@@ -1,0 +1,168 @@
+/* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
+ * The quiet free run's kernel with AVX2: FreeRunKernel.cpp's SSE2 kernel on
+ * eight cells at a time, the same float operations in the same order, so
+ * that a map is the same bit for bit whichever kernel the processor runs.
+ * Only this file's kernel is compiled for AVX2 (GCC's target pragma), so the
+ * rest of the library stays on the baseline x86-64 of Debian's packages. */
+
+#include "grid/FreeRunKernelAvx2.h"
+
+// GCC's pragma below; other compilers (clang builds the fuzzers) keep the
+// SSE2 kernel alone.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
+	!defined(MRPT_EVIDENTIAL_NO_CPU_CLONES)
+#define MRPT_EVIDENTIAL_HAS_AVX2_KERNEL 1
+#include <immintrin.h>
+#endif
+
+namespace mrpt_evidential::detail
+{
+#if defined(MRPT_EVIDENTIAL_HAS_AVX2_KERNEL)
+bool hasAvx2Kernel()
+{
+	static const bool has = [] {
+		__builtin_cpu_init();
+		return __builtin_cpu_supports("avx2") != 0;
+	}();
+	return has;
+}
+
+// Everything from here to the end of the kernel is compiled for AVX2.
+#pragma GCC push_options
+#pragma GCC target("avx2")
+namespace
+{
+
+/** The fields of eight cells, one 32-bit lane per cell, in cell order. */
+struct TLanes8
+{
+	__m256i aside, free, occupied, stamp;
+};
+
+TLanes8 loadEight(const QuantizedCell* c)
+{
+	// Cells 0-1 | 4-5 in one register and 2-3 | 6-7 in the other: the
+	// in-lane shuffles below then leave cells 0-3 in the low half and 4-7
+	// in the high one.
+	const __m256i p = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(c));
+	const __m256i q = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(c + 4));
+	const __m256i a = _mm256_permute2x128_si256(p, q, 0x20);
+	const __m256i b = _mm256_permute2x128_si256(p, q, 0x31);
+	// Each 32-bit word is aside | free << 16 or occupied | stamp << 16.
+	const __m256i low16 = _mm256_set1_epi32(0xFFFF);
+	const __m256 highA = _mm256_castsi256_ps(_mm256_srli_epi32(a, 16)),
+				 highB = _mm256_castsi256_ps(_mm256_srli_epi32(b, 16)),
+				 lowA = _mm256_castsi256_ps(_mm256_and_si256(a, low16)),
+				 lowB = _mm256_castsi256_ps(_mm256_and_si256(b, low16));
+	return {
+		_mm256_castps_si256(_mm256_shuffle_ps(lowA, lowB, _MM_SHUFFLE(2, 0, 2, 0))),
+		_mm256_castps_si256(_mm256_shuffle_ps(highA, highB, _MM_SHUFFLE(2, 0, 2, 0))),
+		_mm256_castps_si256(_mm256_shuffle_ps(lowA, lowB, _MM_SHUFFLE(3, 1, 3, 1))),
+		_mm256_castps_si256(_mm256_shuffle_ps(highA, highB, _MM_SHUFFLE(3, 1, 3, 1)))};
+}
+
+void storeEight(QuantizedCell* c, const TLanes8& v)
+{
+	const __m256i lowWords = _mm256_or_si256(v.aside, _mm256_slli_epi32(v.free, 16));
+	const __m256i highWords = _mm256_or_si256(v.occupied, _mm256_slli_epi32(v.stamp, 16));
+	// Cells 0-1 | 4-5 and 2-3 | 6-7, put back in order.
+	const __m256i a = _mm256_unpacklo_epi32(lowWords, highWords);
+	const __m256i b = _mm256_unpackhi_epi32(lowWords, highWords);
+	_mm256_storeu_si256(reinterpret_cast<__m256i*>(c), _mm256_permute2x128_si256(a, b, 0x20));
+	_mm256_storeu_si256(reinterpret_cast<__m256i*>(c + 4), _mm256_permute2x128_si256(a, b, 0x31));
+}
+
+/** The decay factors of eight cells' stamps, each taken in double precision
+ * and then rounded to single, as the other kernels take them. Loaded one by
+ * one: AVX2's gather was slower than that on the AMD EPYC measured. */
+__m256 eightFactors(const QuantizedCell* c, const TQuietRun& run)
+{
+	float d[8];
+	for (int k = 0; k < 8; ++k)
+		d[k] = static_cast<float>(run.presentGain * run.stampGain[c[k].stamp & kStampMask]);
+	return _mm256_loadu_ps(d);
+}
+}  // namespace
+
+template <bool Decays>
+std::size_t fuseQuietBlocksOfEight(
+	QuantizedCell* cells, std::size_t idx, std::size_t end, const TQuietRun& run)
+{
+	const __m256 mass = _mm256_set1_ps(run.w), ceiling = _mm256_set1_ps(run.ceiling),
+				 scale = _mm256_set1_ps(static_cast<float>(kMassScale)),
+				 one = _mm256_set1_ps(1.0f), half = _mm256_set1_ps(0.5f),
+				 tiny = _mm256_set1_ps(1e-30f);
+	const __m256i flags = _mm256_set1_epi32(kStampFlags), stamp = _mm256_set1_epi32(run.stamp),
+				  judged = _mm256_set1_epi32(kEventJudgedWhenSeenFree),
+				  occupiedLimit = _mm256_set1_epi32(static_cast<int>(run.occupiedBelow) - 1),
+				  ceilingWord = _mm256_set1_epi32(run.ceiling), zero = _mm256_setzero_si256();
+	for (; idx + 8 <= end; idx += 8)
+	{
+		QuantizedCell* c = cells + idx;
+		const TLanes8 in = loadEight(c);
+		// isLoud() on eight cells: such a block is the caller's.
+		const __m256i loudLanes = _mm256_or_si256(
+			_mm256_cmpgt_epi32(in.occupied, occupiedLimit),
+			_mm256_cmpeq_epi32(_mm256_and_si256(in.aside, judged), judged));
+		if (_mm256_movemask_epi8(loudLanes) != 0) break;
+		// Free at the ceiling, nothing occupied, no decay: left as they are,
+		// stamp included (see the SSE2 kernel).
+		__m256i saturated = zero;
+		if constexpr (!Decays)
+		{
+			saturated = _mm256_and_si256(
+				_mm256_cmpeq_epi32(in.free, ceilingWord), _mm256_cmpeq_epi32(in.occupied, zero));
+			if (_mm256_movemask_epi8(saturated) == -1) continue;
+		}
+		__m256 f = _mm256_cvtepi32_ps(in.free), o = _mm256_cvtepi32_ps(in.occupied);
+		if constexpr (Decays)
+		{
+			const __m256 d = eightFactors(c, run);
+			f = _mm256_mul_ps(f, d);
+			o = _mm256_mul_ps(o, d);
+		}
+		// Dempster's rule of the simple free mass on the normal part.
+		const __m256 u = _mm256_sub_ps(_mm256_sub_ps(scale, f), o);
+		const __m256 newConflict = _mm256_div_ps(_mm256_mul_ps(o, mass), scale);
+		const __m256 normalize =
+			_mm256_div_ps(one, _mm256_max_ps(_mm256_sub_ps(one, newConflict), tiny));
+		const __m256 fusedFree = _mm256_mul_ps(_mm256_add_ps(f, _mm256_mul_ps(u, mass)), normalize);
+		const __m256 fusedOccupied =
+			_mm256_mul_ps(_mm256_sub_ps(o, _mm256_mul_ps(o, mass)), normalize);
+		// encodeScaledNormal(): rounded, each at most the ceiling, together
+		// at most the scale.
+		const __m256i occupiedOut =
+			_mm256_cvttps_epi32(_mm256_min_ps(_mm256_add_ps(fusedOccupied, half), ceiling));
+		const __m256 room = _mm256_sub_ps(scale, _mm256_cvtepi32_ps(occupiedOut));
+		const __m256i freeOut = _mm256_cvttps_epi32(
+			_mm256_min_ps(_mm256_min_ps(_mm256_add_ps(fusedFree, half), room), ceiling));
+		const __m256i restamped =
+			_mm256_or_si256(_mm256_and_si256(in.stamp, flags), stamp);
+		storeEight(c, {in.aside, freeOut, occupiedOut,
+					   _mm256_or_si256(_mm256_and_si256(saturated, in.stamp),
+									   _mm256_andnot_si256(saturated, restamped))});
+	}
+	return idx;
+}
+
+template std::size_t fuseQuietBlocksOfEight<true>(
+	QuantizedCell*, std::size_t, std::size_t, const TQuietRun&);
+template std::size_t fuseQuietBlocksOfEight<false>(
+	QuantizedCell*, std::size_t, std::size_t, const TQuietRun&);
+#pragma GCC pop_options
+#else
+bool hasAvx2Kernel() { return false; }
+
+template <bool Decays>
+std::size_t fuseQuietBlocksOfEight(QuantizedCell*, std::size_t idx, std::size_t, const TQuietRun&)
+{
+	return idx;
+}
+
+template std::size_t fuseQuietBlocksOfEight<true>(
+	QuantizedCell*, std::size_t, std::size_t, const TQuietRun&);
+template std::size_t fuseQuietBlocksOfEight<false>(
+	QuantizedCell*, std::size_t, std::size_t, const TQuietRun&);
+#endif
+
+}  // namespace mrpt_evidential::detail
