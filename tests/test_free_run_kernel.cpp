@@ -168,7 +168,7 @@ TEST(GridStorage, SaturatedFreeCellsWithoutDecayReadAsCellByCell)
 TEST(GridStorage, FreeRunsKeepingConflictFuseAsCellByCell)
 {
 	for (const double rate : {0.0, 0.05})
-		for (const std::size_t count : {0, 1, 3, 4, 6, 9, 397})
+		for (const std::size_t count : {0, 1, 3, 4, 6, 8, 9, 12, 15, 397})
 		{
 			const auto grid = [&] {
 				EvidentialGridStorage g;

@@ -1,8 +1,8 @@
 /* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
  * EvidentialGridStorage::fuseQuietFreeRun() and fuseFreeRunKeepingConflict():
  * the bulk of a scan's cells, four cells at a time with SSE2 where the
- * target has it (eight with AVX2 for the quiet runs, FreeRunKernelAvx2.cpp,
- * where the processor has it). The compiler vectorizes fuseSimpleFree() itself, but spends
+ * target has it (eight with AVX2, FreeRunKernelAvx2.cpp, where the
+ * processor has it). The compiler vectorizes fuseSimpleFree() itself, but spends
  * most of the time taking the 16-bit fields of the 8-byte cells apart and
  * together again; here each field is moved once. Results are bit for bit
  * those of fuseSimpleFree() (same float operations in the same order), which
@@ -109,7 +109,7 @@ void EvidentialGridStorage::fuseQuietFreeRun(
 	// Eight cells at a time where the processor has AVX2; this loop takes
 	// the blocks of four that hold a loud cell, and the rest.
 	const bool eight = detail::hasAvx2Kernel();
-	const detail::TQuietRun run{
+	const detail::TFreeRun run{
 		w, m_ceiling, m_currentStamp, occupiedBelow, m_presentGain, m_stampGain.data()};
 	for (; idx + 4 <= end; idx += 4)
 	{
@@ -177,6 +177,11 @@ void EvidentialGridStorage::fuseFreeRunKeepingConflict(
 				 one = _mm_set1_ps(1.0f), half = _mm_set1_ps(0.5f),
 				 maxConflict = _mm_set1_ps(static_cast<float>(kMaxStoredConflict));
 	const __m128i flags = _mm_set1_epi32(kStampFlags), stamp = _mm_set1_epi32(m_currentStamp);
+	// Eight cells at a time where the processor has AVX2, the rest here.
+	if (detail::hasAvx2Kernel())
+		idx = detail::fuseBlocksOfEightKeepingConflict<Decays>(
+			m_cells.data(), idx, end,
+			{w, m_ceiling, m_currentStamp, 0, m_presentGain, m_stampGain.data()});
 	for (; idx + 4 <= end; idx += 4)
 	{
 		QuantizedCell* c = &m_cells[idx];

@@ -1,8 +1,8 @@
 /* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
- * The quiet free run's kernel with AVX2: FreeRunKernel.cpp's SSE2 kernel on
+ * The free runs' kernels with AVX2: FreeRunKernel.cpp's SSE2 kernels on
  * eight cells at a time, the same float operations in the same order, so
  * that a map is the same bit for bit whichever kernel the processor runs.
- * Only this file's kernel is compiled for AVX2 (GCC's target pragma), so the
+ * Only this file's kernels are compiled for AVX2 (GCC's target pragma), so the
  * rest of the library stays on the baseline x86-64 of Debian's packages. */
 
 #include "grid/FreeRunKernelAvx2.h"
@@ -27,7 +27,7 @@ bool hasAvx2Kernel()
 	return has;
 }
 
-// Everything from here to the end of the kernel is compiled for AVX2.
+// Everything from here to the instantiations is compiled for AVX2.
 #pragma GCC push_options
 #pragma GCC target("avx2")
 namespace
@@ -75,25 +75,59 @@ void storeEight(QuantizedCell* c, const TLanes8& v)
 /** The decay factors of eight cells' stamps, each taken in double precision
  * and then rounded to single, as the other kernels take them. Loaded one by
  * one: AVX2's gather was slower than that on the AMD EPYC measured. */
-__m256 eightFactors(const QuantizedCell* c, const TQuietRun& run)
+__m256 eightFactors(const QuantizedCell* c, const TFreeRun& run)
 {
 	float d[8];
 	for (int k = 0; k < 8; ++k)
 		d[k] = static_cast<float>(run.presentGain * run.stampGain[c[k].stamp & kStampMask]);
 	return _mm256_loadu_ps(d);
 }
+
+/** Dempster's rule of the simple free mass w on normal parts (f, o) in
+ * stored units, and the conflict of that fusion (fuseSimpleFree()). */
+struct TFused8
+{
+	__m256 free, occupied, newConflict;
+};
+TFused8 fuseFree(__m256 f, __m256 o, __m256 w)
+{
+	const __m256 scale = _mm256_set1_ps(static_cast<float>(kMassScale)),
+				 one = _mm256_set1_ps(1.0f);
+	const __m256 u = _mm256_sub_ps(_mm256_sub_ps(scale, f), o);
+	const __m256 newConflict = _mm256_div_ps(_mm256_mul_ps(o, w), scale);
+	const __m256 normalize = _mm256_div_ps(
+		one, _mm256_max_ps(_mm256_sub_ps(one, newConflict), _mm256_set1_ps(1e-30f)));
+	return {
+		_mm256_mul_ps(_mm256_add_ps(f, _mm256_mul_ps(u, w)), normalize),
+		_mm256_mul_ps(_mm256_sub_ps(o, _mm256_mul_ps(o, w)), normalize), newConflict};
+}
+
+/** encodeScaledNormal(): n(F) and n(O) rounded, each at most `ceiling`,
+ * together at most the scale. */
+void encode(const TFused8& fused, __m256 ceiling, __m256i& free, __m256i& occupied)
+{
+	const __m256 half = _mm256_set1_ps(0.5f),
+				 scale = _mm256_set1_ps(static_cast<float>(kMassScale));
+	occupied = _mm256_cvttps_epi32(_mm256_min_ps(_mm256_add_ps(fused.occupied, half), ceiling));
+	const __m256 room = _mm256_sub_ps(scale, _mm256_cvtepi32_ps(occupied));
+	free = _mm256_cvttps_epi32(
+		_mm256_min_ps(_mm256_min_ps(_mm256_add_ps(fused.free, half), room), ceiling));
+}
+
+/** The stamps of fused cells: the current one, with each cell's flags. */
+__m256i restamped(__m256i stamps, const TFreeRun& run)
+{
+	return _mm256_or_si256(
+		_mm256_and_si256(stamps, _mm256_set1_epi32(kStampFlags)), _mm256_set1_epi32(run.stamp));
+}
 }  // namespace
 
 template <bool Decays>
 std::size_t fuseQuietBlocksOfEight(
-	QuantizedCell* cells, std::size_t idx, std::size_t end, const TQuietRun& run)
+	QuantizedCell* cells, std::size_t idx, std::size_t end, const TFreeRun& run)
 {
-	const __m256 mass = _mm256_set1_ps(run.w), ceiling = _mm256_set1_ps(run.ceiling),
-				 scale = _mm256_set1_ps(static_cast<float>(kMassScale)),
-				 one = _mm256_set1_ps(1.0f), half = _mm256_set1_ps(0.5f),
-				 tiny = _mm256_set1_ps(1e-30f);
-	const __m256i flags = _mm256_set1_epi32(kStampFlags), stamp = _mm256_set1_epi32(run.stamp),
-				  judged = _mm256_set1_epi32(kEventJudgedWhenSeenFree),
+	const __m256 mass = _mm256_set1_ps(run.w), ceiling = _mm256_set1_ps(run.ceiling);
+	const __m256i judged = _mm256_set1_epi32(kEventJudgedWhenSeenFree),
 				  occupiedLimit = _mm256_set1_epi32(static_cast<int>(run.occupiedBelow) - 1),
 				  ceilingWord = _mm256_set1_epi32(run.ceiling), zero = _mm256_setzero_si256();
 	for (; idx + 8 <= end; idx += 8)
@@ -121,48 +155,81 @@ std::size_t fuseQuietBlocksOfEight(
 			f = _mm256_mul_ps(f, d);
 			o = _mm256_mul_ps(o, d);
 		}
-		// Dempster's rule of the simple free mass on the normal part.
-		const __m256 u = _mm256_sub_ps(_mm256_sub_ps(scale, f), o);
-		const __m256 newConflict = _mm256_div_ps(_mm256_mul_ps(o, mass), scale);
-		const __m256 normalize =
-			_mm256_div_ps(one, _mm256_max_ps(_mm256_sub_ps(one, newConflict), tiny));
-		const __m256 fusedFree = _mm256_mul_ps(_mm256_add_ps(f, _mm256_mul_ps(u, mass)), normalize);
-		const __m256 fusedOccupied =
-			_mm256_mul_ps(_mm256_sub_ps(o, _mm256_mul_ps(o, mass)), normalize);
-		// encodeScaledNormal(): rounded, each at most the ceiling, together
-		// at most the scale.
-		const __m256i occupiedOut =
-			_mm256_cvttps_epi32(_mm256_min_ps(_mm256_add_ps(fusedOccupied, half), ceiling));
-		const __m256 room = _mm256_sub_ps(scale, _mm256_cvtepi32_ps(occupiedOut));
-		const __m256i freeOut = _mm256_cvttps_epi32(
-			_mm256_min_ps(_mm256_min_ps(_mm256_add_ps(fusedFree, half), room), ceiling));
-		const __m256i restamped =
-			_mm256_or_si256(_mm256_and_si256(in.stamp, flags), stamp);
+		__m256i freeOut, occupiedOut;
+		encode(fuseFree(f, o, mass), ceiling, freeOut, occupiedOut);
 		storeEight(c, {in.aside, freeOut, occupiedOut,
 					   _mm256_or_si256(_mm256_and_si256(saturated, in.stamp),
-									   _mm256_andnot_si256(saturated, restamped))});
+									   _mm256_andnot_si256(saturated, restamped(in.stamp, run)))});
 	}
 	return idx;
 }
 
-template std::size_t fuseQuietBlocksOfEight<true>(
-	QuantizedCell*, std::size_t, std::size_t, const TQuietRun&);
-template std::size_t fuseQuietBlocksOfEight<false>(
-	QuantizedCell*, std::size_t, std::size_t, const TQuietRun&);
-#pragma GCC pop_options
+template <bool Decays>
+std::size_t fuseBlocksOfEightKeepingConflict(
+	QuantizedCell* cells, std::size_t idx, std::size_t end, const TFreeRun& run)
+{
+	const __m256 scale = _mm256_set1_ps(static_cast<float>(kMassScale)),
+				 mass = _mm256_set1_ps(run.w), one = _mm256_set1_ps(1.0f),
+				 half = _mm256_set1_ps(0.5f),
+				 maxConflict = _mm256_set1_ps(static_cast<float>(kMaxStoredConflict));
+	for (; idx + 8 <= end; idx += 8)
+	{
+		QuantizedCell* c = cells + idx;
+		const TLanes8 in = loadEight(c);
+		__m256 f = _mm256_cvtepi32_ps(in.free), o = _mm256_cvtepi32_ps(in.occupied);
+		// 1 - K, K the conflict the cell keeps.
+		__m256 keep = _mm256_sub_ps(one, _mm256_div_ps(_mm256_cvtepi32_ps(in.aside), scale));
+		if constexpr (Decays)
+		{
+			const __m256 d = eightFactors(c, run);
+			const __m256 decayedKeep = _mm256_sub_ps(one, _mm256_mul_ps(d, _mm256_sub_ps(one, keep)));
+			const __m256 s = _mm256_div_ps(_mm256_mul_ps(d, keep), decayedKeep);
+			f = _mm256_mul_ps(f, s);
+			o = _mm256_mul_ps(o, s);
+			keep = decayedKeep;
+		}
+		const TFused8 fused = fuseFree(f, o, mass);
+		// encodeScaled(): K rounded and capped, then the normal part.
+		const __m256 conflict = _mm256_mul_ps(
+			scale, _mm256_sub_ps(one, _mm256_mul_ps(keep, _mm256_sub_ps(one, fused.newConflict))));
+		const __m256i conflictOut =
+			_mm256_cvttps_epi32(_mm256_min_ps(_mm256_add_ps(conflict, half), maxConflict));
+		__m256i freeOut, occupiedOut;
+		encode(fused, scale, freeOut, occupiedOut);
+		storeEight(c, {conflictOut, freeOut, occupiedOut, restamped(in.stamp, run)});
+	}
+	return idx;
+}
+
 #else
 bool hasAvx2Kernel() { return false; }
 
 template <bool Decays>
-std::size_t fuseQuietBlocksOfEight(QuantizedCell*, std::size_t idx, std::size_t, const TQuietRun&)
+std::size_t fuseQuietBlocksOfEight(QuantizedCell*, std::size_t idx, std::size_t, const TFreeRun&)
+{
+	return idx;
+}
+template <bool Decays>
+std::size_t fuseBlocksOfEightKeepingConflict(
+	QuantizedCell*, std::size_t idx, std::size_t, const TFreeRun&)
 {
 	return idx;
 }
 
+#endif
+
+// Instantiated where the pragma still holds: a template takes the target
+// options of the place it is instantiated.
 template std::size_t fuseQuietBlocksOfEight<true>(
-	QuantizedCell*, std::size_t, std::size_t, const TQuietRun&);
+	QuantizedCell*, std::size_t, std::size_t, const TFreeRun&);
 template std::size_t fuseQuietBlocksOfEight<false>(
-	QuantizedCell*, std::size_t, std::size_t, const TQuietRun&);
+	QuantizedCell*, std::size_t, std::size_t, const TFreeRun&);
+template std::size_t fuseBlocksOfEightKeepingConflict<true>(
+	QuantizedCell*, std::size_t, std::size_t, const TFreeRun&);
+template std::size_t fuseBlocksOfEightKeepingConflict<false>(
+	QuantizedCell*, std::size_t, std::size_t, const TFreeRun&);
+#if defined(MRPT_EVIDENTIAL_HAS_AVX2_KERNEL)
+#pragma GCC pop_options
 #endif
 
 }  // namespace mrpt_evidential::detail

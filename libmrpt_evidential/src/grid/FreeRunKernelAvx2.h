@@ -1,6 +1,7 @@
-/* mrpt-evidential: internal: the quiet free run's kernel eight cells at a
- * time, for processors with AVX2 (EvidentialGridStorage::fuseQuietFreeRun()
- * hands it the run when the processor has them). */
+/* mrpt-evidential: internal: the free runs' kernels eight cells at a time,
+ * for processors with AVX2 (EvidentialGridStorage::fuseQuietFreeRun() and
+ * fuseFreeRunKeepingConflict() hand them their runs where the processor has
+ * it). */
 #pragma once
 
 #include <mrpt_evidential/grid/QuantizedMass.h>
@@ -10,11 +11,12 @@
 
 namespace mrpt_evidential::detail
 {
-/** What one quiet run's fusion needs of the storage. */
-struct TQuietRun
+/** What a free run's fusion needs of the storage. */
+struct TFreeRun
 {
 	float w = 0;  //!< the simple free mass fused into each cell
-	std::uint16_t ceiling = 0, stamp = 0, occupiedBelow = 0;
+	std::uint16_t ceiling = 0, stamp = 0;
+	std::uint16_t occupiedBelow = 0;  //!< see isLoud(); quiet runs only
 	/** decayFactor(s) = presentGain * stampGain[s & kStampMask]. */
 	double presentGain = 1.0;
 	const double* stampGain = nullptr;
@@ -30,6 +32,14 @@ bool hasAvx2Kernel();
  * the index it stopped at. Call only when hasAvx2Kernel(). */
 template <bool Decays>
 std::size_t fuseQuietBlocksOfEight(
-	QuantizedCell* cells, std::size_t idx, std::size_t end, const TQuietRun& run);
+	QuantizedCell* cells, std::size_t idx, std::size_t end, const TFreeRun& run);
+
+/** Fuses run.w into cells[idx, end) eight at a time, with the results of
+ * fuseSimpleFree<Decays, true>() (a grid that keeps conflict) bit for bit,
+ * until fewer than eight are left: returns the index it stopped at. Call
+ * only when hasAvx2Kernel(). */
+template <bool Decays>
+std::size_t fuseBlocksOfEightKeepingConflict(
+	QuantizedCell* cells, std::size_t idx, std::size_t end, const TFreeRun& run);
 
 }  // namespace mrpt_evidential::detail

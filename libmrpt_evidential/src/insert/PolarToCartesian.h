@@ -190,7 +190,7 @@ class CPolarToCartesian
 	 * for those cells' memory in time. */
 	TRows prepareRows(const GridGeometry& grid);
 	template <typename VisitMixed, typename VisitUniform, typename Ahead>
-	MRPT_EVIDENTIAL_CPU_CLONES void visitRows(
+	void visitRows(
 		const GridGeometry& grid, int first, int last, VisitMixed&& visitMixed,
 		VisitUniform&& visitUniform, Ahead&& ahead) const;
 	/** How many rows ahead visitRows() announces a row's spans (2 to 4
@@ -466,5 +466,20 @@ void CPolarToCartesian::visitRows(
 		}
 	}
 }
+
+namespace
+{
+/** transform.visitRows() built for AVX2 as well (CpuClones.h): what the
+ * insertion's fusion calls. A function of each file that includes this
+ * header (unnamed namespace): on a clone of a template whose instances files
+ * share (COMDAT), GCC 14 stops with an internal compiler error. */
+template <typename VisitMixed, typename VisitUniform, typename Ahead>
+MRPT_EVIDENTIAL_CPU_CLONES void visitRowsCloned(
+	const CPolarToCartesian& transform, const GridGeometry& grid, int first, int last,
+	VisitMixed&& visitMixed, VisitUniform&& visitUniform, Ahead&& ahead)
+{
+	transform.visitRows(grid, first, last, visitMixed, visitUniform, ahead);
+}
+}  // namespace
 
 }  // namespace mrpt_evidential

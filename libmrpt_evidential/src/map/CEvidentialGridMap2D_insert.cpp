@@ -129,8 +129,8 @@ void CEvidentialGridMap2D::fuseKeepingConflict(CScanImpacts& impacts)
 			else
 				for (std::size_t idx = from; idx < from + n; ++idx) single(idx, uniform);
 		};
-		transform.visitRows(
-			g, band.firstRow, band.lastRow,
+		visitRowsCloned(
+			transform, g, band.firstRow, band.lastRow,
 			[&](std::size_t idx, const Mass& observed) {
 				const double hit = hits.occupiedAt(idx);
 				if (hit > 0.0) m_grid.markImpact(idx);

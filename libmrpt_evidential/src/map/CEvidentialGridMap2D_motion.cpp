@@ -74,8 +74,8 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 				first, count, static_cast<float>(w), occupiedBelow, band.loud);
 			for (const std::size_t idx : band.loud) single(band.motion, idx, uniform, false);
 		};
-		transform.visitRows(
-			g, band.firstRow, band.lastRow,
+		visitRowsCloned(
+			transform, g, band.firstRow, band.lastRow,
 			[&](std::size_t idx, const Mass& observed) {
 				if (const double hit = hits.occupiedAt(idx); hit > 0.0)
 				{

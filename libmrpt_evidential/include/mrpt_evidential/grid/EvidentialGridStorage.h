@@ -259,7 +259,7 @@ class EvidentialGridStorage
 	}
 	/** fuseSimpleFree<Decays, true>() (a grid that keeps conflict) into
 	 * every cell of [first, first + count), four at a time where the target
-	 * has SSE2, with the same results. */
+	 * has SSE2, eight where the processor has AVX2, with the same results. */
 	template <bool Decays>
 	void fuseFreeRunKeepingConflict(std::size_t first, std::size_t count, float w);
 	/** fuseSimpleFree<Decays, false>() (a grid without conflict) into every
