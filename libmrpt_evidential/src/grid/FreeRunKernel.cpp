@@ -1,10 +1,10 @@
 /* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
  * EvidentialGridStorage::fuseQuietFreeRun() and fuseFreeRunKeepingConflict():
  * the bulk of a scan's cells, four cells at a time with SSE2 where the
- * target has it (eight with AVX2, FreeRunKernelAvx2.cpp, where the
- * processor has it). The compiler vectorizes fuseSimpleFree() itself, but spends
- * most of the time taking the 16-bit fields of the 8-byte cells apart and
- * together again; here each field is moved once. Results are bit for bit
+ * target has it (eight with AVX2, FreeRunKernelAvx2.cpp, where the processor
+ * has it). The compiler vectorizes fuseSimpleFree() itself, but spends most
+ * of the time taking the 16-bit fields of the 8-byte cells apart and together
+ * again; here each field is moved once. Results are bit for bit
  * those of fuseSimpleFree() (same float operations in the same order), which
  * stays the code for the tail of a run and for targets without SSE2. */
 
