@@ -106,18 +106,21 @@ void EvidentialGridStorage::fuseQuietFreeRun(
 				  judged = _mm_set1_epi32(kEventJudgedWhenSeenFree),
 				  occupiedLimit = _mm_set1_epi32(static_cast<int>(occupiedBelow) - 1),
 				  ceilingWord = _mm_set1_epi32(m_ceiling), zero = _mm_setzero_si128();
+#if defined(MRPT_EVIDENTIAL_HAS_AVX2_KERNELS)
 	// Eight cells at a time where the processor has AVX2; this loop takes
 	// the blocks of four that hold a loud cell, and the rest.
-	const bool eight = detail::hasAvx2Kernel();
 	const detail::TFreeRun run{
 		w, m_ceiling, m_currentStamp, occupiedBelow, m_presentGain, m_stampGain.data()};
+#endif
 	for (; idx + 4 <= end; idx += 4)
 	{
-		if (eight)
+#if defined(MRPT_EVIDENTIAL_HAS_AVX2_KERNELS)
+		if (detail::kAvx2Available)
 		{
 			idx = detail::fuseQuietBlocksOfEight<Decays>(m_cells.data(), idx, end, run);
 			if (idx + 4 > end) break;
 		}
+#endif
 		QuantizedCell* c = &m_cells[idx];
 		const TLanes in = loadFour(c);
 		// isLoud() on four cells.
@@ -177,11 +180,13 @@ void EvidentialGridStorage::fuseFreeRunKeepingConflict(
 				 one = _mm_set1_ps(1.0f), half = _mm_set1_ps(0.5f),
 				 maxConflict = _mm_set1_ps(static_cast<float>(kMaxStoredConflict));
 	const __m128i flags = _mm_set1_epi32(kStampFlags), stamp = _mm_set1_epi32(m_currentStamp);
+#if defined(MRPT_EVIDENTIAL_HAS_AVX2_KERNELS)
 	// Eight cells at a time where the processor has AVX2, the rest here.
-	if (detail::hasAvx2Kernel())
+	if (detail::kAvx2Available)
 		idx = detail::fuseBlocksOfEightKeepingConflict<Decays>(
 			m_cells.data(), idx, end,
 			{w, m_ceiling, m_currentStamp, 0, m_presentGain, m_stampGain.data()});
+#endif
 	for (; idx + 4 <= end; idx += 4)
 	{
 		QuantizedCell* c = &m_cells[idx];

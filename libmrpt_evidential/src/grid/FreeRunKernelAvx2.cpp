@@ -7,25 +7,15 @@
 
 #include "grid/FreeRunKernelAvx2.h"
 
-// GCC's pragma below; other compilers (clang builds the fuzzers) keep the
-// SSE2 kernel alone.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
-	!defined(MRPT_EVIDENTIAL_NO_CPU_CLONES)
-#define MRPT_EVIDENTIAL_HAS_AVX2_KERNEL 1
+#if defined(MRPT_EVIDENTIAL_HAS_AVX2_KERNELS)
 #include <immintrin.h>
-#endif
 
 namespace mrpt_evidential::detail
 {
-#if defined(MRPT_EVIDENTIAL_HAS_AVX2_KERNEL)
-bool hasAvx2Kernel()
-{
-	static const bool has = [] {
-		__builtin_cpu_init();
-		return __builtin_cpu_supports("avx2") != 0;
-	}();
-	return has;
-}
+const bool kAvx2Available = [] {
+	__builtin_cpu_init();
+	return __builtin_cpu_supports("avx2") != 0;
+}();
 
 // Everything from here to the instantiations is compiled for AVX2.
 #pragma GCC push_options
@@ -201,23 +191,6 @@ std::size_t fuseBlocksOfEightKeepingConflict(
 	return idx;
 }
 
-#else
-bool hasAvx2Kernel() { return false; }
-
-template <bool Decays>
-std::size_t fuseQuietBlocksOfEight(QuantizedCell*, std::size_t idx, std::size_t, const TFreeRun&)
-{
-	return idx;
-}
-template <bool Decays>
-std::size_t fuseBlocksOfEightKeepingConflict(
-	QuantizedCell*, std::size_t idx, std::size_t, const TFreeRun&)
-{
-	return idx;
-}
-
-#endif
-
 // Instantiated where the pragma still holds: a template takes the target
 // options of the place it is instantiated.
 template std::size_t fuseQuietBlocksOfEight<true>(
@@ -228,8 +201,7 @@ template std::size_t fuseBlocksOfEightKeepingConflict<true>(
 	QuantizedCell*, std::size_t, std::size_t, const TFreeRun&);
 template std::size_t fuseBlocksOfEightKeepingConflict<false>(
 	QuantizedCell*, std::size_t, std::size_t, const TFreeRun&);
-#if defined(MRPT_EVIDENTIAL_HAS_AVX2_KERNEL)
 #pragma GCC pop_options
-#endif
 
 }  // namespace mrpt_evidential::detail
+#endif

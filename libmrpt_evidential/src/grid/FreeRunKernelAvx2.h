@@ -9,6 +9,14 @@
 #include <cstddef>
 #include <cstdint>
 
+// Built with GCC's target pragma on x86-64; other compilers (clang builds
+// the fuzzers) and architectures keep the SSE2 kernels alone.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
+	!defined(MRPT_EVIDENTIAL_NO_CPU_CLONES)
+#define MRPT_EVIDENTIAL_HAS_AVX2_KERNELS 1
+#endif
+
+#if defined(MRPT_EVIDENTIAL_HAS_AVX2_KERNELS)
 namespace mrpt_evidential::detail
 {
 /** What a free run's fusion needs of the storage. */
@@ -22,14 +30,16 @@ struct TFreeRun
 	const double* stampGain = nullptr;
 };
 
-/** True when this build has the AVX2 kernel and the processor (and its
- * operating system) can run it. */
-bool hasAvx2Kernel();
+/** True when the processor (and its operating system) can run the kernels
+ * below: found once, when the library is loaded. (Read before that, by
+ * another library's static initialization, it is false: the SSE2 kernels,
+ * with the same results.) */
+extern const bool kAvx2Available;
 
 /** Fuses run.w into cells[idx, end) eight at a time, with the results of
  * fuseSimpleFree<Decays, false>() bit for bit, and stops at the first block
  * of eight that holds a loud cell or when fewer than eight are left: returns
- * the index it stopped at. Call only when hasAvx2Kernel(). */
+ * the index it stopped at. Call only when kAvx2Available. */
 template <bool Decays>
 std::size_t fuseQuietBlocksOfEight(
 	QuantizedCell* cells, std::size_t idx, std::size_t end, const TFreeRun& run);
@@ -37,9 +47,10 @@ std::size_t fuseQuietBlocksOfEight(
 /** Fuses run.w into cells[idx, end) eight at a time, with the results of
  * fuseSimpleFree<Decays, true>() (a grid that keeps conflict) bit for bit,
  * until fewer than eight are left: returns the index it stopped at. Call
- * only when hasAvx2Kernel(). */
+ * only when kAvx2Available. */
 template <bool Decays>
 std::size_t fuseBlocksOfEightKeepingConflict(
 	QuantizedCell* cells, std::size_t idx, std::size_t end, const TFreeRun& run);
 
 }  // namespace mrpt_evidential::detail
+#endif
