@@ -248,8 +248,7 @@ bool isMember(Enum value)
 }
 }  // namespace
 
-std::optional<TInvalidOption>
-	CEvidentialGridMap2D::TInsertionOptions::firstInvalidOfTheMap() const
+std::optional<TInvalidOption> TEvidentialInsertionOptions::firstInvalidOfTheMap() const
 {
 	// Written as !(valid) so that NaN fails every test.
 	if (!isMember(sensorModel))
@@ -291,8 +290,7 @@ std::optional<TInvalidOption>
 	return std::nullopt;
 }
 
-std::optional<TInvalidOption> CEvidentialGridMap2D::TInsertionOptions::firstInvalid()
-	const
+std::optional<TInvalidOption> TEvidentialInsertionOptions::firstInvalid() const
 {
 	if (auto bad = firstInvalidOfTheMap()) return bad;
 	// The sensor model's and the polar grid's rules, for cells of 1 m (the
@@ -300,13 +298,12 @@ std::optional<TInvalidOption> CEvidentialGridMap2D::TInsertionOptions::firstInva
 	return sourceGridOptions(1.0).firstInvalid();
 }
 
-void CEvidentialGridMap2D::TInsertionOptions::validate() const
+void TEvidentialInsertionOptions::validate() const
 {
 	if (const auto bad = firstInvalid()) throw std::invalid_argument(bad->describe());
 }
 
-TSourceGridOptions CEvidentialGridMap2D::TInsertionOptions::sourceGridOptions(
-	double resolution) const
+TSourceGridOptions TEvidentialInsertionOptions::sourceGridOptions(double resolution) const
 {
 	TSourceGridOptions o;
 	o.sensorModel.model = sensorModel;
@@ -322,10 +319,10 @@ TSourceGridOptions CEvidentialGridMap2D::TInsertionOptions::sourceGridOptions(
 	return o;
 }
 
-void CEvidentialGridMap2D::TInsertionOptions::loadFromConfigFile(
+void TEvidentialInsertionOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& source, const std::string& section)
 {
-	TInsertionOptions o = *this;  // all or nothing: *this changes only if valid
+	TEvidentialInsertionOptions o = *this;  // all or nothing: *this changes only if valid
 	detail::readEnum(source, section, "sensorModel", o.sensorModel);
 	detail::readDouble(source, section, "muF", o.muF);
 	detail::readDouble(source, section, "muO", o.muO);
@@ -354,7 +351,7 @@ void CEvidentialGridMap2D::TInsertionOptions::loadFromConfigFile(
 	*this = o;
 }
 
-void CEvidentialGridMap2D::TInsertionOptions::saveToConfigFile(
+void TEvidentialInsertionOptions::saveToConfigFile(
 	mrpt::config::CConfigFileBase& target, const std::string& section) const
 {
 	using detail::writeValue;
@@ -401,8 +398,7 @@ void CEvidentialGridMap2D::TInsertionOptions::saveToConfigFile(
 			   "threads that fuse an observation's cells, [1, 64]; the same map");
 }
 
-void CEvidentialGridMap2D::TInsertionOptions::dumpToTextStream(
-	std::ostream& out) const
+void TEvidentialInsertionOptions::dumpToTextStream(std::ostream& out) const
 {
 	detail::dumpAsIni(*this, "insertOpts", out);
 }

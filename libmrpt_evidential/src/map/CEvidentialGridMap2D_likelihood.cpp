@@ -165,11 +165,11 @@ double logAddExp(double a, double b)
 
 }  // namespace
 
-void CEvidentialGridMap2D::TLikelihoodOptions::loadFromConfigFile(
+void TEvidentialLikelihoodOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& source, const std::string& section)
 {
 	// All or nothing: *this changes only when every value is valid.
-	TLikelihoodOptions o = *this;
+	TEvidentialLikelihoodOptions o = *this;
 	detail::readDouble(source, section, "occupiedMass", o.occupiedMass);
 	detail::readDouble(source, section, "maxCorrsDistance", o.maxCorrsDistance);
 	detail::readDouble(source, section, "sigma", o.sigma);
@@ -182,8 +182,7 @@ void CEvidentialGridMap2D::TLikelihoodOptions::loadFromConfigFile(
 	*this = o;
 }
 
-std::optional<TInvalidOption> CEvidentialGridMap2D::TLikelihoodOptions::firstInvalid()
-	const
+std::optional<TInvalidOption> TEvidentialLikelihoodOptions::firstInvalid() const
 {
 	// Written as !(valid) so that NaN fails every test.
 	const auto positive = [](double v) { return v > 0.0 && std::isfinite(v); };
@@ -204,13 +203,13 @@ std::optional<TInvalidOption> CEvidentialGridMap2D::TLikelihoodOptions::firstInv
 	return std::nullopt;
 }
 
-void CEvidentialGridMap2D::TLikelihoodOptions::validate() const
+void TEvidentialLikelihoodOptions::validate() const
 {
 	if (const auto bad = firstInvalid())
 		throw std::invalid_argument("likelihoodOpts: " + bad->describe());
 }
 
-void CEvidentialGridMap2D::TLikelihoodOptions::saveToConfigFile(
+void TEvidentialLikelihoodOptions::saveToConfigFile(
 	mrpt::config::CConfigFileBase& target, const std::string& section) const
 {
 	using detail::writeValue;
@@ -227,7 +226,7 @@ void CEvidentialGridMap2D::TLikelihoodOptions::saveToConfigFile(
 			   "a ray ending in a never-seen cell scores as neither hit nor miss");
 }
 
-void CEvidentialGridMap2D::TLikelihoodOptions::dumpToTextStream(
+void TEvidentialLikelihoodOptions::dumpToTextStream(
 	std::ostream& out) const
 {
 	detail::dumpAsIni(*this, "likelihoodOpts", out);

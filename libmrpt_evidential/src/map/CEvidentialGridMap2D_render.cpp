@@ -56,11 +56,11 @@ mrpt::opengl::CTexturedPlane::Ptr makePlane(
 }
 }  // namespace
 
-void CEvidentialGridMap2D::TRenderingOptions::loadFromConfigFile(
+void TEvidentialRenderingOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& source, const std::string& section)
 {
 	// All or nothing: *this changes only when every value is valid.
-	TRenderingOptions o = *this;
+	TEvidentialRenderingOptions o = *this;
 	detail::readEnum(source, section, "style", o.style);
 	detail::readColor(source, section, "freeColor", o.freeColor);
 	detail::readColor(source, section, "occupiedColor", o.occupiedColor);
@@ -78,8 +78,7 @@ void CEvidentialGridMap2D::TRenderingOptions::loadFromConfigFile(
 	*this = o;
 }
 
-std::optional<TInvalidOption> CEvidentialGridMap2D::TRenderingOptions::firstInvalid()
-	const
+std::optional<TInvalidOption> TEvidentialRenderingOptions::firstInvalid() const
 {
 	if (style != RenderStyle::Classes && style != RenderStyle::Masses)
 		return TInvalidOption{"style", "Classes or Masses", static_cast<double>(style)};
@@ -88,13 +87,13 @@ std::optional<TInvalidOption> CEvidentialGridMap2D::TRenderingOptions::firstInva
 	return std::nullopt;
 }
 
-void CEvidentialGridMap2D::TRenderingOptions::validate() const
+void TEvidentialRenderingOptions::validate() const
 {
 	if (const auto bad = firstInvalid())
 		throw std::invalid_argument("renderOpts: " + bad->describe());
 }
 
-void CEvidentialGridMap2D::TRenderingOptions::saveToConfigFile(
+void TEvidentialRenderingOptions::saveToConfigFile(
 	mrpt::config::CConfigFileBase& target, const std::string& section) const
 {
 	using detail::writeValue;
@@ -113,7 +112,7 @@ void CEvidentialGridMap2D::TRenderingOptions::saveToConfigFile(
 	writeValue(target, section, "height", height, "m, z of the 3-D view's top plane");
 }
 
-void CEvidentialGridMap2D::TRenderingOptions::dumpToTextStream(std::ostream& out) const
+void TEvidentialRenderingOptions::dumpToTextStream(std::ostream& out) const
 {
 	detail::dumpAsIni(*this, "renderOpts", out);
 }
@@ -146,7 +145,7 @@ CEvidentialGridMap2D::CellClass CEvidentialGridMap2D::classOfCell(double x, doub
 	return g.inside(cx, cy) ? classOf(g.index(cx, cy)) : CellClass::Unknown;
 }
 
-mrpt::img::TColor CEvidentialGridMap2D::TRenderingOptions::colorOf(CellClass c) const
+mrpt::img::TColor TEvidentialRenderingOptions::colorOf(CellClass c) const
 {
 	switch (c)
 	{
