@@ -387,6 +387,11 @@ void printReport(const bench::RecordingReporter& reporter)
 		printRatio(std::string("likelihood, ") + at,
 				   std::string("ours/likelihood/") + at,
 				   std::string("mrpt/likelihood/") + at, 1.5);
+		// The other rules, reinforced model with decay as above.
+		for (const char* rule : {"Dempster", "Yager", "DuboisPrade", "Cautious"})
+			printRatio(std::string("insert ") + rule + " vs widening, " + at,
+					   std::string("ours/insert/Reinforced/") + rule + "/decay/" + at,
+					   std::string("mrpt/insert/widening/") + at, 1.5);
 	}
 	printRatio("insert into 400 x 400 m vs 40 x 40 m map",
 			   "ours/mapsize/400m/stock/0.05m", "ours/mapsize/40m/stock/0.05m", 1.1);

@@ -1,7 +1,8 @@
 /* The bulk kernels of FreeRunKernel.cpp: a run of cells fused at once gives
  * the cells, bit for bit, that fusing them one by one gives (one mass for the
- * run or one per cell; with and without decay; keeping conflict or not), and
- * lists the loud cells it leaves, in order. */
+ * run or one per cell; with and without decay; keeping conflict or not;
+ * Dempster's rule or Yager's), and lists the loud cells it leaves, in order;
+ * cell by cell, the single-precision fusion reads as the general rule's. */
 #include <gtest/gtest.h>
 #include <mrpt_evidential/grid/EvidentialGridStorage.h>
 
@@ -48,43 +49,53 @@ EvidentialGridStorage gridWithVariedCells(
 	return g;
 }
 /** Fuses w into [first, first + count) of `bulk` as one quiet run and into
- * the same cells of `oneByOne` cell by cell; fails unless both give the same
- * cells bit for bit (loud cells untouched) and list the same loud cells.
- * Returns how many were loud. */
-std::size_t expectQuietRunAsCellByCell(
-	EvidentialGridStorage& bulk, EvidentialGridStorage& oneByOne, bool decays,
-	std::size_t first, std::size_t count, float w, std::uint16_t occupiedBelow)
+ * the same cells of `oneByOne` cell by cell, with Dempster's rule
+ * (`normalizes`) or Yager's; fails unless both give the same cells bit for
+ * bit (loud cells untouched) and list the same loud cells. Returns how many
+ * were loud. */
+template <bool Decays, bool Normalizes>
+std::size_t quietRunAsCellByCell(
+	EvidentialGridStorage& bulk, EvidentialGridStorage& oneByOne, std::size_t first,
+	std::size_t count, float w, std::uint16_t occupiedBelow)
 {
 	std::vector<std::size_t> loud, expectedLoud;
-	if (decays)
-		bulk.fuseQuietFreeRun<true>(first, count, w, occupiedBelow, loud);
-	else
-		bulk.fuseQuietFreeRun<false>(first, count, w, occupiedBelow, loud);
+	bulk.fuseQuietFreeRun<Decays, Normalizes>(first, count, w, occupiedBelow, loud);
 	for (std::size_t idx = first; idx < first + count; ++idx)
-	{
 		if (oneByOne.isLoud(idx, occupiedBelow))
 			expectedLoud.push_back(idx);
-		else if (decays)
-			oneByOne.fuseSimpleFree<true, false>(idx, w);
 		else
-			oneByOne.fuseSimpleFree<false, false>(idx, w);
-	}
-	EXPECT_EQ(loud, expectedLoud) << decays << " " << first << " " << count;
-	EXPECT_TRUE(bulk.cells() == oneByOne.cells()) << decays << " " << first << " " << count;
+			oneByOne.fuseSimpleFree<Decays, false, Normalizes>(idx, w);
+	EXPECT_EQ(loud, expectedLoud) << Decays << Normalizes << " " << first << " " << count;
+	EXPECT_TRUE(bulk.cells() == oneByOne.cells())
+		<< Decays << Normalizes << " " << first << " " << count;
 	return loud.size();
+}
+std::size_t expectQuietRunAsCellByCell(
+	EvidentialGridStorage& bulk, EvidentialGridStorage& oneByOne, bool decays,
+	bool normalizes, std::size_t first, std::size_t count, float w,
+	std::uint16_t occupiedBelow)
+{
+	if (decays)
+		return normalizes
+			? quietRunAsCellByCell<true, true>(bulk, oneByOne, first, count, w, occupiedBelow)
+			: quietRunAsCellByCell<true, false>(bulk, oneByOne, first, count, w, occupiedBelow);
+	return normalizes
+		? quietRunAsCellByCell<false, true>(bulk, oneByOne, first, count, w, occupiedBelow)
+		: quietRunAsCellByCell<false, false>(bulk, oneByOne, first, count, w, occupiedBelow);
 }
 }  // namespace
 
 TEST(GridStorage, QuietFreeRunsFuseAsCellByCellAndListTheLoudInOrder)
 {
+	for (const bool normalizes : {true, false})
 	for (const double rate : {0.0, 0.05})
 		for (std::size_t first = 0; first < 5; ++first)
 			for (const std::size_t count : {0, 1, 3, 4, 5, 7, 8, 9, 200, 395})
 			{
 				EvidentialGridStorage bulk = gridWithVariedCells(rate, 7);
 				EvidentialGridStorage oneByOne = gridWithVariedCells(rate, 7);
-				const std::size_t loud =
-					expectQuietRunAsCellByCell(bulk, oneByOne, rate > 0.0, first, count, 0.37f, 20000);
+				const std::size_t loud = expectQuietRunAsCellByCell(
+					bulk, oneByOne, rate > 0.0, normalizes, first, count, 0.37f, 20000);
 				if (count >= 200)
 				{
 					EXPECT_GT(loud, 10u);
@@ -97,6 +108,7 @@ TEST(GridStorage, QuietFreeRunsFuseAsCellByCellAndListTheLoudInOrder)
 // in one step, and the blocks of four around a loud cell.
 TEST(GridStorage, LongQuietRunsFuseAsCellByCell)
 {
+	for (const bool normalizes : {true, false})
 	for (const double rate : {0.0, 0.05})
 		for (std::size_t first = 0; first < 9; ++first)
 			for (const std::size_t count : {8, 12, 15, 16, 17, 31, 200, 391})
@@ -104,8 +116,8 @@ TEST(GridStorage, LongQuietRunsFuseAsCellByCell)
 				EvidentialGridStorage bulk = gridWithVariedCells(rate, 11, true);
 				EvidentialGridStorage oneByOne = gridWithVariedCells(rate, 11, true);
 				// n(O) of 2000 is above the 0.02 of the scale these cells hold.
-				const std::size_t loud =
-					expectQuietRunAsCellByCell(bulk, oneByOne, rate > 0.0, first, count, 0.61f, 2000);
+				const std::size_t loud = expectQuietRunAsCellByCell(
+					bulk, oneByOne, rate > 0.0, normalizes, first, count, 0.61f, 2000);
 				if (count >= 200)
 				{
 					EXPECT_GT(loud, 0u);
@@ -207,4 +219,46 @@ TEST(GridStorage, FreeRunsKeepingConflictFuseAsCellByCell)
 					oneByOne.fuseSimpleFree<false, true>(idx, w);
 			ASSERT_TRUE(bulk.cells() == oneByOne.cells()) << rate << " " << count;
 		}
+}
+
+// The single-precision fusion of a simple free mass, as the bulk runs it,
+// reads as the general rule's fusion to within the stored values' step:
+// Dempster's rule (fuseNormalized()) and Yager's, which Dubois and Prade's
+// rule and the conjunctive rule with its conflict to Omega equal here.
+TEST(GridStorage, SimpleFreeFusionReadsAsTheGeneralRule)
+{
+	for (const double rate : {0.0, 0.05})
+		for (const FusionRule rule :
+			 {FusionRule::Dempster, FusionRule::Yager, FusionRule::DuboisPrade})
+			for (const float w : {0.05f, 0.37f, 0.7f, 0.99f})
+			{
+				EvidentialGridStorage simple = gridWithVariedCells(rate, 3);
+				EvidentialGridStorage general = gridWithVariedCells(rate, 3);
+				const std::size_t cells = simple.geometry().cellCount();
+				for (std::size_t idx = 0; idx < cells; ++idx)
+				{
+					if (rule == FusionRule::Dempster)
+						simple.fuseSimpleFree<true, false, true>(idx, w);
+					else
+						simple.fuseSimpleFree<true, false, false>(idx, w);
+					general.fuse(idx, Mass::simpleFree(w), rule, ConflictHandling::Normalize);
+				}
+				if (rule == FusionRule::Yager)
+				{
+					EvidentialGridStorage toUnknown = gridWithVariedCells(rate, 3);
+					for (std::size_t idx = 0; idx < cells; ++idx)
+						toUnknown.fuse(
+							idx, Mass::simpleFree(w), FusionRule::Conjunctive,
+							ConflictHandling::ToUnknown);
+					ASSERT_TRUE(toUnknown.cells() == general.cells()) << rate << " " << w;
+				}
+				for (std::size_t idx = 0; idx < cells; ++idx)
+				{
+					const Mass a = simple.read(idx), b = general.read(idx);
+					ASSERT_NEAR(a.free, b.free, 1.5 / kMassScale) << int(rule) << " " << idx;
+					ASSERT_NEAR(a.occupied, b.occupied, 1.5 / kMassScale) << int(rule) << " " << idx;
+					ASSERT_NEAR(a.unknown, b.unknown, 3.0 / kMassScale) << int(rule) << " " << idx;
+					ASSERT_EQ(a.conflict, 0.0);
+				}
+			}
 }

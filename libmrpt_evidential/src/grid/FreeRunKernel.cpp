@@ -53,19 +53,22 @@ void storeFour(QuantizedCell* c, const TLanes& v)
 	_mm_storeu_si128(reinterpret_cast<__m128i*>(c + 2), _mm_unpackhi_epi32(lowWords, highWords));
 }
 /** Dempster's rule of the simple free mass w on normal parts (f, o) in
- * stored units, and the conflict of that fusion, as fuseSimpleFree() does. */
+ * stored units, and the conflict of that fusion, as fuseSimpleFree() does;
+ * Yager's rule (the conflict to Omega) when not `Normalizes`. */
 struct TFused
 {
 	__m128 free, occupied, newConflict;
 };
+template <bool Normalizes = true>
 TFused fuseFree(__m128 f, __m128 o, __m128 w)
 {
 	const __m128 scale = _mm_set1_ps(static_cast<float>(kMassScale)), one = _mm_set1_ps(1.0f);
 	const __m128 u = _mm_sub_ps(_mm_sub_ps(scale, f), o);
 	const __m128 newConflict = _mm_div_ps(_mm_mul_ps(o, w), scale);
 	// At total conflict both products are 0 and n becomes vacuous.
-	const __m128 normalize =
-		_mm_div_ps(one, _mm_max_ps(_mm_sub_ps(one, newConflict), _mm_set1_ps(1e-30f)));
+	const __m128 normalize = Normalizes
+		? _mm_div_ps(one, _mm_max_ps(_mm_sub_ps(one, newConflict), _mm_set1_ps(1e-30f)))
+		: one;
 	return {
 		_mm_mul_ps(_mm_add_ps(f, _mm_mul_ps(u, w)), normalize),
 		_mm_mul_ps(_mm_sub_ps(o, _mm_mul_ps(o, w)), normalize), newConflict};
@@ -92,7 +95,7 @@ __m128 fourFactors(const QuantizedCell* c, Factor&& factor)
 }  // namespace
 #endif
 
-template <bool Decays>
+template <bool Decays, bool Normalizes>
 void EvidentialGridStorage::fuseQuietFreeRun(
 	std::size_t first, std::size_t count, float w, std::uint16_t occupiedBelow,
 	std::vector<std::size_t>& loud)
@@ -117,7 +120,8 @@ void EvidentialGridStorage::fuseQuietFreeRun(
 #if defined(MRPT_EVIDENTIAL_HAS_AVX2_KERNELS)
 		if (detail::kAvx2Available)
 		{
-			idx = detail::fuseQuietBlocksOfEight<Decays>(m_cells.data(), idx, end, run);
+			idx = detail::fuseQuietBlocksOfEight<Decays, Normalizes>(
+				m_cells.data(), idx, end, run);
 			if (idx + 4 > end) break;
 		}
 #endif
@@ -133,7 +137,7 @@ void EvidentialGridStorage::fuseQuietFreeRun(
 				if (isLoud(k, occupiedBelow))
 					loud.push_back(k);
 				else
-					fuseSimpleFree<Decays, false>(k, w);
+					fuseSimpleFree<Decays, false, Normalizes>(k, w);
 			continue;
 		}
 		// Free at the ceiling, nothing occupied: the fusion gives the cell
@@ -155,7 +159,7 @@ void EvidentialGridStorage::fuseQuietFreeRun(
 			o = _mm_mul_ps(o, d);
 		}
 		__m128i freeOut, occupiedOut;
-		encodeFour(fuseFree(f, o, mass), ceiling, freeOut, occupiedOut);
+		encodeFour(fuseFree<Normalizes>(f, o, mass), ceiling, freeOut, occupiedOut);
 		const __m128i restamped = _mm_or_si128(_mm_and_si128(in.stamp, flags), stamp);
 		storeFour(c, {in.aside, freeOut, occupiedOut,
 					  _mm_or_si128(_mm_and_si128(saturated, in.stamp),
@@ -166,7 +170,7 @@ void EvidentialGridStorage::fuseQuietFreeRun(
 		if (isLoud(idx, occupiedBelow))
 			loud.push_back(idx);
 		else
-			fuseSimpleFree<Decays, false>(idx, w);
+			fuseSimpleFree<Decays, false, Normalizes>(idx, w);
 }
 
 template <bool Decays>
@@ -222,9 +226,13 @@ template void EvidentialGridStorage::fuseFreeRunKeepingConflict<true>(
 	std::size_t, std::size_t, float);
 template void EvidentialGridStorage::fuseFreeRunKeepingConflict<false>(
 	std::size_t, std::size_t, float);
-template void EvidentialGridStorage::fuseQuietFreeRun<true>(
+template void EvidentialGridStorage::fuseQuietFreeRun<true, true>(
 	std::size_t, std::size_t, float, std::uint16_t, std::vector<std::size_t>&);
-template void EvidentialGridStorage::fuseQuietFreeRun<false>(
+template void EvidentialGridStorage::fuseQuietFreeRun<false, true>(
+	std::size_t, std::size_t, float, std::uint16_t, std::vector<std::size_t>&);
+template void EvidentialGridStorage::fuseQuietFreeRun<true, false>(
+	std::size_t, std::size_t, float, std::uint16_t, std::vector<std::size_t>&);
+template void EvidentialGridStorage::fuseQuietFreeRun<false, false>(
 	std::size_t, std::size_t, float, std::uint16_t, std::vector<std::size_t>&);
 
 }  // namespace mrpt_evidential

@@ -74,19 +74,22 @@ __m256 eightFactors(const QuantizedCell* c, const TFreeRun& run)
 }
 
 /** Dempster's rule of the simple free mass w on normal parts (f, o) in
- * stored units, and the conflict of that fusion (fuseSimpleFree()). */
+ * stored units, and the conflict of that fusion (fuseSimpleFree()); Yager's
+ * rule when not `Normalizes`. */
 struct TFused8
 {
 	__m256 free, occupied, newConflict;
 };
+template <bool Normalizes = true>
 TFused8 fuseFree(__m256 f, __m256 o, __m256 w)
 {
 	const __m256 scale = _mm256_set1_ps(static_cast<float>(kMassScale)),
 				 one = _mm256_set1_ps(1.0f);
 	const __m256 u = _mm256_sub_ps(_mm256_sub_ps(scale, f), o);
 	const __m256 newConflict = _mm256_div_ps(_mm256_mul_ps(o, w), scale);
-	const __m256 normalize = _mm256_div_ps(
-		one, _mm256_max_ps(_mm256_sub_ps(one, newConflict), _mm256_set1_ps(1e-30f)));
+	const __m256 normalize = Normalizes
+		? _mm256_div_ps(one, _mm256_max_ps(_mm256_sub_ps(one, newConflict), _mm256_set1_ps(1e-30f)))
+		: one;
 	return {
 		_mm256_mul_ps(_mm256_add_ps(f, _mm256_mul_ps(u, w)), normalize),
 		_mm256_mul_ps(_mm256_sub_ps(o, _mm256_mul_ps(o, w)), normalize), newConflict};
@@ -112,7 +115,7 @@ __m256i restamped(__m256i stamps, const TFreeRun& run)
 }
 }  // namespace
 
-template <bool Decays>
+template <bool Decays, bool Normalizes>
 std::size_t fuseQuietBlocksOfEight(
 	QuantizedCell* cells, std::size_t idx, std::size_t end, const TFreeRun& run)
 {
@@ -146,7 +149,7 @@ std::size_t fuseQuietBlocksOfEight(
 			o = _mm256_mul_ps(o, d);
 		}
 		__m256i freeOut, occupiedOut;
-		encode(fuseFree(f, o, mass), ceiling, freeOut, occupiedOut);
+		encode(fuseFree<Normalizes>(f, o, mass), ceiling, freeOut, occupiedOut);
 		storeEight(c, {in.aside, freeOut, occupiedOut,
 					   _mm256_or_si256(_mm256_and_si256(saturated, in.stamp),
 									   _mm256_andnot_si256(saturated, restamped(in.stamp, run)))});
@@ -193,9 +196,13 @@ std::size_t fuseBlocksOfEightKeepingConflict(
 
 // Instantiated where the pragma still holds: a template takes the target
 // options of the place it is instantiated.
-template std::size_t fuseQuietBlocksOfEight<true>(
+template std::size_t fuseQuietBlocksOfEight<true, true>(
 	QuantizedCell*, std::size_t, std::size_t, const TFreeRun&);
-template std::size_t fuseQuietBlocksOfEight<false>(
+template std::size_t fuseQuietBlocksOfEight<false, true>(
+	QuantizedCell*, std::size_t, std::size_t, const TFreeRun&);
+template std::size_t fuseQuietBlocksOfEight<true, false>(
+	QuantizedCell*, std::size_t, std::size_t, const TFreeRun&);
+template std::size_t fuseQuietBlocksOfEight<false, false>(
 	QuantizedCell*, std::size_t, std::size_t, const TFreeRun&);
 template std::size_t fuseBlocksOfEightKeepingConflict<true>(
 	QuantizedCell*, std::size_t, std::size_t, const TFreeRun&);

@@ -37,10 +37,10 @@ struct TFreeRun
 extern const bool kAvx2Available;
 
 /** Fuses run.w into cells[idx, end) eight at a time, with the results of
- * fuseSimpleFree<Decays, false>() bit for bit, and stops at the first block
- * of eight that holds a loud cell or when fewer than eight are left: returns
- * the index it stopped at. Call only when kAvx2Available. */
-template <bool Decays>
+ * fuseSimpleFree<Decays, false, Normalizes>() bit for bit, and stops at the
+ * first block of eight that holds a loud cell or when fewer than eight are
+ * left: returns the index it stopped at. Call only when kAvx2Available. */
+template <bool Decays, bool Normalizes>
 std::size_t fuseQuietBlocksOfEight(
 	QuantizedCell* cells, std::size_t idx, std::size_t end, const TFreeRun& run);
 

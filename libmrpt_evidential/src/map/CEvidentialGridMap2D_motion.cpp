@@ -29,9 +29,14 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 	motion.begin(rules);
 	const FusionRule rule = io.fusionRule;
 	const ConflictHandling handling = io.conflictHandling;
-	// Dempster's rule, however it is asked for, has a kernel of its own.
+	// Dempster's rule, however it is asked for, has a kernel of its own, and
+	// so has Yager's (Dubois and Prade's is the same on {F, O} for cells
+	// without conflict): the bulk of a scan's cells fused in blocks.
 	const bool dempster = rule == FusionRule::Dempster ||
 		(rule == FusionRule::Conjunctive && handling == ConflictHandling::Normalize);
+	const bool yager = rule == FusionRule::Yager || rule == FusionRule::DuboisPrade ||
+		(rule == FusionRule::Conjunctive && handling == ConflictHandling::ToUnknown);
+	const bool inBlocks = dempster || yager;
 	const Mass& uniform = transform.uniformMass();
 
 	const auto single = [&](CMotionDetector& detector, std::size_t idx, const Mass& observed,
@@ -61,8 +66,9 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 	const auto fuseBand = [&](auto decays, TWorkspace::TFusionBand& band) {
 		band.motion.begin(rules);
 		auto hits = impacts.cursorFrom(g.index(0, band.firstRow));
+		constexpr bool kDecays = decltype(decays)::value;
 		const auto fuseRun = [&](std::size_t first, std::size_t count) {
-			if (!dempster)
+			if (!inBlocks)
 			{
 				for (std::size_t idx = first; idx < first + count; ++idx)
 					single(band.motion, idx, uniform, false);
@@ -70,8 +76,12 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 			}
 			// The quiet cells in bulk, then the loud ones one by one, in order.
 			band.loud.clear();
-			m_grid.fuseQuietFreeRun<decltype(decays)::value>(
-				first, count, static_cast<float>(w), occupiedBelow, band.loud);
+			if (yager)
+				m_grid.fuseQuietFreeRun<kDecays, false>(
+					first, count, static_cast<float>(w), occupiedBelow, band.loud);
+			else
+				m_grid.fuseQuietFreeRun<kDecays, true>(
+					first, count, static_cast<float>(w), occupiedBelow, band.loud);
 			for (const std::size_t idx : band.loud) single(band.motion, idx, uniform, false);
 		};
 		visitRowsCloned(
@@ -87,10 +97,15 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 				// A cell quiet at the lowest threshold (1) is quiet at every w:
 				// its own threshold, a division, is then not worked out.
 				else if (
-					dempster && observed.occupied == 0.0 && observed.conflict == 0.0 &&
+					inBlocks && observed.occupied == 0.0 && observed.conflict == 0.0 &&
 					!(m_grid.isLoud(idx, 1) && m_grid.isLoud(idx, occupiedBelowFor(observed.free))))
-					m_grid.fuseSimpleFree<decltype(decays)::value, false>(
-						idx, static_cast<float>(observed.free));
+				{
+					if (yager)
+						m_grid.fuseSimpleFree<kDecays, false, false>(
+							idx, static_cast<float>(observed.free));
+					else
+						m_grid.fuseSimpleFree<kDecays, false>(idx, static_cast<float>(observed.free));
+				}
 				else
 					single(band.motion, idx, observed, false);
 			},

@@ -203,10 +203,14 @@ class EvidentialGridStorage
 	 * once): a float holds a stored value to 1/256 of a step. fuseConjunctive()
 	 * in a grid that keeps conflict, fuseNormalized() in one that does not:
 	 * `KeepsConflict` must be keepsConflict(). `Decays` false skips the
-	 * decay, for grids whose decay rate is 0. */
-	template <bool Decays, bool KeepsConflict>
+	 * decay, for grids whose decay rate is 0. `Normalizes` false (a grid
+	 * without conflict only) gives the fusion's conflict to Omega instead of
+	 * normalizing it away: Yager's rule, and Dubois and Prade's, which on
+	 * {F, O} is the same for masses without conflict. */
+	template <bool Decays, bool KeepsConflict, bool Normalizes = true>
 	void fuseSimpleFree(std::size_t idx, float w)
 	{
+		static_assert(Normalizes || !KeepsConflict, "a grid that keeps conflict normalizes");
 		QuantizedCell& c = m_cells[idx];
 		// Free at the ceiling, nothing occupied, no decay: the fusion gives
 		// the cell back as it was, and its stamp means nothing.
@@ -239,7 +243,7 @@ class EvidentialGridStorage
 		const float u = scale - f - o;
 		const float newConflict = o * w / scale;
 		// At total conflict both products are 0 and n becomes vacuous.
-		const float normalize = 1.0f / std::max(1.0f - newConflict, 1e-30f);
+		const float normalize = Normalizes ? 1.0f / std::max(1.0f - newConflict, 1e-30f) : 1.0f;
 		if constexpr (KeepsConflict)
 			encodeScaled(
 				c, scale * (1.0f - keep * (1.0f - newConflict)), (f + u * w) * normalize,
@@ -262,12 +266,12 @@ class EvidentialGridStorage
 	 * has SSE2, eight where the processor has AVX2, with the same results. */
 	template <bool Decays>
 	void fuseFreeRunKeepingConflict(std::size_t first, std::size_t count, float w);
-	/** fuseSimpleFree<Decays, false>() (a grid without conflict) into every
-	 * quiet cell of [first, first + count) (see isLoud()); loud cells are
-	 * left unfused, their indices appended to `loud` in order. Four cells at
-	 * a time where the target has SSE2, eight where the processor has AVX2,
-	 * with the same results. */
-	template <bool Decays>
+	/** fuseSimpleFree<Decays, false, Normalizes>() (a grid without
+	 * conflict) into every quiet cell of [first, first + count) (see
+	 * isLoud()); loud cells are left unfused, their indices appended to
+	 * `loud` in order. Four cells at a time where the target has SSE2, eight
+	 * where the processor has AVX2, with the same results. */
+	template <bool Decays, bool Normalizes = true>
 	void fuseQuietFreeRun(
 		std::size_t first, std::size_t count, float w, std::uint16_t occupiedBelow,
 		std::vector<std::size_t>& loud);
