@@ -1,13 +1,15 @@
 /* The bulk kernels of FreeRunKernel.cpp: a run of cells fused at once gives
  * the cells, bit for bit, that fusing them one by one gives (one mass for the
  * run or one per cell; with and without decay; keeping conflict or not;
- * Dempster's rule or Yager's), and lists the loud cells it leaves, in order;
- * cell by cell, the single-precision fusion reads as the general rule's. */
+ * Dempster's rule, Yager's or the cautious rule), and lists the loud cells it
+ * leaves, in order; cell by cell, the single-precision fusion reads as the
+ * general rule's. */
 #include <gtest/gtest.h>
 #include <mrpt_evidential/grid/EvidentialGridStorage.h>
 
 #include <cstdint>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 using namespace mrpt_evidential;
@@ -37,6 +39,13 @@ EvidentialGridStorage gridWithVariedCells(
 			const double occupiedShare = mostlyQuiet ? 0.02 : (unit(rng) < 0.3 ? 1.0 : 0.1);
 			const double f = unit(rng), o = unit(rng) * (1.0 - f) * occupiedShare;
 			g.write(idx, Mass{0.0, f, o, 1.0 - f - o});
+			// Now and then no ignorance at all, mostly free: quiet for
+			// Dempster's rule, loud for the cautious rule's kernels.
+			if (!mostlyQuiet && unit(rng) < 0.05)
+			{
+				const double free = 0.7 + 0.3 * unit(rng);
+				g.write(idx, Mass{0.0, free, 1.0 - free, 0.0});
+			}
 			if (unit(rng) < 0.2) g.markImpact(idx);
 			if (unit(rng) < 0.2) g.markFlipped(idx);
 			const double e = unit(rng) * (mostlyQuiet ? 10.0 : 1.0);
@@ -49,81 +58,87 @@ EvidentialGridStorage gridWithVariedCells(
 	return g;
 }
 /** Fuses w into [first, first + count) of `bulk` as one quiet run and into
- * the same cells of `oneByOne` cell by cell, with Dempster's rule
- * (`normalizes`) or Yager's; fails unless both give the same cells bit for
- * bit (loud cells untouched) and list the same loud cells. Returns how many
- * were loud. */
-template <bool Decays, bool Normalizes>
+ * the same cells of `oneByOne` cell by cell, with `Rule`; fails unless both
+ * give the same cells bit for bit (loud cells untouched) and list the same
+ * loud cells. Returns how many were loud. */
+template <bool Decays, FreeFusion Rule>
 std::size_t quietRunAsCellByCell(
 	EvidentialGridStorage& bulk, EvidentialGridStorage& oneByOne, std::size_t first,
 	std::size_t count, float w, std::uint16_t occupiedBelow)
 {
 	std::vector<std::size_t> loud, expectedLoud;
-	bulk.fuseQuietFreeRun<Decays, Normalizes>(first, count, w, occupiedBelow, loud);
+	bulk.fuseQuietFreeRun<Decays, Rule>(first, count, w, occupiedBelow, loud);
 	for (std::size_t idx = first; idx < first + count; ++idx)
-		if (oneByOne.isLoud(idx, occupiedBelow))
+		if (oneByOne.isLoudFor<Rule>(idx, occupiedBelow))
 			expectedLoud.push_back(idx);
 		else
-			oneByOne.fuseSimpleFree<Decays, false, Normalizes>(idx, w);
-	EXPECT_EQ(loud, expectedLoud) << Decays << Normalizes << " " << first << " " << count;
+			oneByOne.fuseSimpleFree<Decays, false, Rule>(idx, w);
+	const int rule = static_cast<int>(Rule);
+	EXPECT_EQ(loud, expectedLoud) << Decays << rule << " " << first << " " << count;
 	EXPECT_TRUE(bulk.cells() == oneByOne.cells())
-		<< Decays << Normalizes << " " << first << " " << count;
+		<< Decays << rule << " " << first << " " << count;
 	return loud.size();
 }
+template <FreeFusion Rule>
 std::size_t expectQuietRunAsCellByCell(
 	EvidentialGridStorage& bulk, EvidentialGridStorage& oneByOne, bool decays,
-	bool normalizes, std::size_t first, std::size_t count, float w,
-	std::uint16_t occupiedBelow)
+	std::size_t first, std::size_t count, float w, std::uint16_t occupiedBelow)
 {
-	if (decays)
-		return normalizes
-			? quietRunAsCellByCell<true, true>(bulk, oneByOne, first, count, w, occupiedBelow)
-			: quietRunAsCellByCell<true, false>(bulk, oneByOne, first, count, w, occupiedBelow);
-	return normalizes
-		? quietRunAsCellByCell<false, true>(bulk, oneByOne, first, count, w, occupiedBelow)
-		: quietRunAsCellByCell<false, false>(bulk, oneByOne, first, count, w, occupiedBelow);
+	return decays
+		? quietRunAsCellByCell<true, Rule>(bulk, oneByOne, first, count, w, occupiedBelow)
+		: quietRunAsCellByCell<false, Rule>(bulk, oneByOne, first, count, w, occupiedBelow);
+}
+/** expectQuietRunAsCellByCell() with each rule of the kernels. */
+template <typename Check>
+void forEachFreeFusion(Check&& check)
+{
+	check(std::integral_constant<FreeFusion, FreeFusion::Dempster>{});
+	check(std::integral_constant<FreeFusion, FreeFusion::Yager>{});
+	check(std::integral_constant<FreeFusion, FreeFusion::CautiousNormalized>{});
 }
 }  // namespace
 
 TEST(GridStorage, QuietFreeRunsFuseAsCellByCellAndListTheLoudInOrder)
 {
-	for (const bool normalizes : {true, false})
-	for (const double rate : {0.0, 0.05})
-		for (std::size_t first = 0; first < 5; ++first)
-			for (const std::size_t count : {0, 1, 3, 4, 5, 7, 8, 9, 200, 395})
-			{
-				EvidentialGridStorage bulk = gridWithVariedCells(rate, 7);
-				EvidentialGridStorage oneByOne = gridWithVariedCells(rate, 7);
-				const std::size_t loud = expectQuietRunAsCellByCell(
-					bulk, oneByOne, rate > 0.0, normalizes, first, count, 0.37f, 20000);
-				if (count >= 200)
+	forEachFreeFusion([](auto rule) {
+		for (const double rate : {0.0, 0.05})
+			for (std::size_t first = 0; first < 5; ++first)
+				for (const std::size_t count : {0, 1, 3, 4, 5, 7, 8, 9, 200, 395})
 				{
-					EXPECT_GT(loud, 10u);
-					EXPECT_LT(loud, count / 2);
+					EvidentialGridStorage bulk = gridWithVariedCells(rate, 7);
+					EvidentialGridStorage oneByOne = gridWithVariedCells(rate, 7);
+					const std::size_t loud = expectQuietRunAsCellByCell<rule()>(
+						bulk, oneByOne, rate > 0.0, first, count, 0.37f, 20000);
+					if (count >= 200)
+					{
+						EXPECT_GT(loud, 10u);
+						EXPECT_LT(loud, count / 2);
+					}
 				}
-			}
+	});
 }
 
 // Blocks of eight cells without a loud one, which processors with AVX2 fuse
 // in one step, and the blocks of four around a loud cell.
 TEST(GridStorage, LongQuietRunsFuseAsCellByCell)
 {
-	for (const bool normalizes : {true, false})
-	for (const double rate : {0.0, 0.05})
-		for (std::size_t first = 0; first < 9; ++first)
-			for (const std::size_t count : {8, 12, 15, 16, 17, 31, 200, 391})
-			{
-				EvidentialGridStorage bulk = gridWithVariedCells(rate, 11, true);
-				EvidentialGridStorage oneByOne = gridWithVariedCells(rate, 11, true);
-				// n(O) of 2000 is above the 0.02 of the scale these cells hold.
-				const std::size_t loud = expectQuietRunAsCellByCell(
-					bulk, oneByOne, rate > 0.0, normalizes, first, count, 0.61f, 2000);
-				if (count >= 200)
+	forEachFreeFusion([](auto rule) {
+		for (const double rate : {0.0, 0.05})
+			for (std::size_t first = 0; first < 9; ++first)
+				for (const std::size_t count : {8, 12, 15, 16, 17, 31, 200, 391})
 				{
-					EXPECT_GT(loud, 0u);
-					EXPECT_LT(loud, count / 8);
+					EvidentialGridStorage bulk = gridWithVariedCells(rate, 11, true);
+					EvidentialGridStorage oneByOne = gridWithVariedCells(rate, 11, true);
+					// n(O) of 2000 is above the 0.02 of the scale these cells hold.
+					const std::size_t loud = expectQuietRunAsCellByCell<rule()>(
+						bulk, oneByOne, rate > 0.0, first, count, 0.61f, 2000);
+					if (count >= 200)
+					{
+						EXPECT_GT(loud, 0u);
+						EXPECT_LT(loud, count / 8);
+					}
 				}
-			}
+	});
 }
 
 TEST(GridStorage, SaturatedFreeCellsWithoutDecayReadAsCellByCell)
@@ -223,26 +238,36 @@ TEST(GridStorage, FreeRunsKeepingConflictFuseAsCellByCell)
 
 // The single-precision fusion of a simple free mass, as the bulk runs it,
 // reads as the general rule's fusion to within the stored values' step:
-// Dempster's rule (fuseNormalized()) and Yager's, which Dubois and Prade's
-// rule and the conjunctive rule with its conflict to Omega equal here.
+// Dempster's rule, Yager's (which Dubois and Prade's rule and the
+// conjunctive rule with its conflict to Omega equal here) and the cautious
+// rule normalized.
 TEST(GridStorage, SimpleFreeFusionReadsAsTheGeneralRule)
 {
 	for (const double rate : {0.0, 0.05})
 		for (const FusionRule rule :
-			 {FusionRule::Dempster, FusionRule::Yager, FusionRule::DuboisPrade})
+			 {FusionRule::Dempster, FusionRule::Yager, FusionRule::DuboisPrade,
+			  FusionRule::Cautious})
 			for (const float w : {0.05f, 0.37f, 0.7f, 0.99f})
 			{
 				EvidentialGridStorage simple = gridWithVariedCells(rate, 3);
 				EvidentialGridStorage general = gridWithVariedCells(rate, 3);
 				const std::size_t cells = simple.geometry().cellCount();
+				std::size_t fused = 0;
 				for (std::size_t idx = 0; idx < cells; ++idx)
 				{
+					// The cautious rule's kernels leave cells without
+					// ignorance to the general rule.
+					if (rule == FusionRule::Cautious && simple.holdsNoIgnorance(idx)) continue;
 					if (rule == FusionRule::Dempster)
-						simple.fuseSimpleFree<true, false, true>(idx, w);
+						simple.fuseSimpleFree<true, false, FreeFusion::Dempster>(idx, w);
+					else if (rule == FusionRule::Cautious)
+						simple.fuseSimpleFree<true, false, FreeFusion::CautiousNormalized>(idx, w);
 					else
-						simple.fuseSimpleFree<true, false, false>(idx, w);
+						simple.fuseSimpleFree<true, false, FreeFusion::Yager>(idx, w);
 					general.fuse(idx, Mass::simpleFree(w), rule, ConflictHandling::Normalize);
+					++fused;
 				}
+				EXPECT_GT(fused, cells / 2);
 				if (rule == FusionRule::Yager)
 				{
 					EvidentialGridStorage toUnknown = gridWithVariedCells(rate, 3);

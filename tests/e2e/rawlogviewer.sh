@@ -40,7 +40,9 @@ session() {
 }
 
 check_with_plugin() {
-	wait_for_window "$MAIN_WINDOW" 60 || fail "RawLogViewer's window never showed up"
+	# Two minutes: a full ctest run, both cores busy with the sanitizer
+	# trees' builds, once failed here after a minute.
+	wait_for_window "$MAIN_WINDOW" 120 || fail "RawLogViewer's window never showed up"
 	# The rawlog is loaded by a timer once the window is up; a failed load
 	# shows its message at once.
 	sleep 5
@@ -58,7 +60,7 @@ check_with_plugin() {
 }
 
 check_without_plugin() {
-	wait_for_window "$NOTHING_LOADED" 60 || fail "without -l, RawLogViewer did not report an empty load"
+	wait_for_window "$NOTHING_LOADED" 120 || fail "without -l, RawLogViewer did not report an empty load"
 	ok "without -l, RawLogViewer loads nothing: the plugin is what makes the rawlog readable"
 }
 
@@ -84,7 +86,7 @@ for run in with_plugin without_plugin; do
 	[ $run = with_plugin ] && use=$plugin || use=
 	start_xvfb "$scratch" 1280x1024x24
 	status=0
-	HOME=$scratch/home timeout 150 \
+	HOME=$scratch/home timeout 140 \
 		bash "${BASH_SOURCE[0]}" --in-display "$use" "$viewer" "$rawlog" "$run" "$scratch" </dev/null ||
 		status=$?
 	stop_process "$XVFB_PID"

@@ -52,21 +52,37 @@ void storeFour(QuantizedCell* c, const TLanes& v)
 	_mm_storeu_si128(reinterpret_cast<__m128i*>(c), _mm_unpacklo_epi32(lowWords, highWords));
 	_mm_storeu_si128(reinterpret_cast<__m128i*>(c + 2), _mm_unpackhi_epi32(lowWords, highWords));
 }
-/** Dempster's rule of the simple free mass w on normal parts (f, o) in
- * stored units, and the conflict of that fusion, as fuseSimpleFree() does;
- * Yager's rule (the conflict to Omega) when not `Normalizes`. */
+/** The simple free mass w fused into normal parts (f, o) in stored units
+ * with `Rule`, and the conflict of that fusion (Dempster's rule), as
+ * fuseSimpleFree() does. */
 struct TFused
 {
 	__m128 free, occupied, newConflict;
 };
-template <bool Normalizes = true>
+template <FreeFusion Rule = FreeFusion::Dempster>
 TFused fuseFree(__m128 f, __m128 o, __m128 w)
 {
 	const __m128 scale = _mm_set1_ps(static_cast<float>(kMassScale)), one = _mm_set1_ps(1.0f);
 	const __m128 u = _mm_sub_ps(_mm_sub_ps(scale, f), o);
+	if constexpr (Rule == FreeFusion::CautiousNormalized)
+	{
+		// EvidentialGridStorage::cautiousFree().
+		const __m128 tiny = _mm_set1_ps(1e-30f);
+		const __m128 weightFree =
+			_mm_min_ps(_mm_div_ps(u, _mm_max_ps(_mm_add_ps(f, u), tiny)), _mm_sub_ps(one, w));
+		const __m128 weightOccupied = _mm_div_ps(u, _mm_max_ps(_mm_add_ps(o, u), tiny));
+		const __m128 keep = _mm_max_ps(
+			_mm_sub_ps(
+				_mm_add_ps(weightFree, weightOccupied), _mm_mul_ps(weightFree, weightOccupied)),
+			tiny);
+		return {
+			_mm_div_ps(_mm_mul_ps(_mm_mul_ps(scale, _mm_sub_ps(one, weightFree)), weightOccupied), keep),
+			_mm_div_ps(_mm_mul_ps(_mm_mul_ps(scale, _mm_sub_ps(one, weightOccupied)), weightFree), keep),
+			_mm_setzero_ps()};
+	}
 	const __m128 newConflict = _mm_div_ps(_mm_mul_ps(o, w), scale);
 	// At total conflict both products are 0 and n becomes vacuous.
-	const __m128 normalize = Normalizes
+	const __m128 normalize = Rule == FreeFusion::Dempster
 		? _mm_div_ps(one, _mm_max_ps(_mm_sub_ps(one, newConflict), _mm_set1_ps(1e-30f)))
 		: one;
 	return {
@@ -95,7 +111,7 @@ __m128 fourFactors(const QuantizedCell* c, Factor&& factor)
 }  // namespace
 #endif
 
-template <bool Decays, bool Normalizes>
+template <bool Decays, FreeFusion Rule>
 void EvidentialGridStorage::fuseQuietFreeRun(
 	std::size_t first, std::size_t count, float w, std::uint16_t occupiedBelow,
 	std::vector<std::size_t>& loud)
@@ -108,7 +124,8 @@ void EvidentialGridStorage::fuseQuietFreeRun(
 				  stamp = _mm_set1_epi32(m_currentStamp),
 				  judged = _mm_set1_epi32(kEventJudgedWhenSeenFree),
 				  occupiedLimit = _mm_set1_epi32(static_cast<int>(occupiedBelow) - 1),
-				  ceilingWord = _mm_set1_epi32(m_ceiling), zero = _mm_setzero_si128();
+				  ceilingWord = _mm_set1_epi32(m_ceiling), zero = _mm_setzero_si128(),
+				  noIgnorance = _mm_set1_epi32(static_cast<int>(kMassScale) - 1);
 #if defined(MRPT_EVIDENTIAL_HAS_AVX2_KERNELS)
 	// Eight cells at a time where the processor has AVX2; this loop takes
 	// the blocks of four that hold a loud cell, and the rest.
@@ -120,24 +137,27 @@ void EvidentialGridStorage::fuseQuietFreeRun(
 #if defined(MRPT_EVIDENTIAL_HAS_AVX2_KERNELS)
 		if (detail::kAvx2Available)
 		{
-			idx = detail::fuseQuietBlocksOfEight<Decays, Normalizes>(
+			idx = detail::fuseQuietBlocksOfEight<Decays, Rule>(
 				m_cells.data(), idx, end, run);
 			if (idx + 4 > end) break;
 		}
 #endif
 		QuantizedCell* c = &m_cells[idx];
 		const TLanes in = loadFour(c);
-		// isLoud() on four cells.
-		const __m128i loudLanes = _mm_or_si128(
+		// isLoudFor() on four cells.
+		__m128i loudLanes = _mm_or_si128(
 			_mm_cmpgt_epi32(in.occupied, occupiedLimit),
 			_mm_cmpeq_epi32(_mm_and_si128(in.aside, judged), judged));
+		if constexpr (Rule == FreeFusion::CautiousNormalized)
+			loudLanes = _mm_or_si128(
+				loudLanes, _mm_cmpgt_epi32(_mm_add_epi32(in.free, in.occupied), noIgnorance));
 		if (_mm_movemask_epi8(loudLanes) != 0)
 		{
 			for (std::size_t k = idx; k < idx + 4; ++k)
-				if (isLoud(k, occupiedBelow))
+				if (isLoudFor<Rule>(k, occupiedBelow))
 					loud.push_back(k);
 				else
-					fuseSimpleFree<Decays, false, Normalizes>(k, w);
+					fuseSimpleFree<Decays, false, Rule>(k, w);
 			continue;
 		}
 		// Free at the ceiling, nothing occupied: the fusion gives the cell
@@ -159,7 +179,7 @@ void EvidentialGridStorage::fuseQuietFreeRun(
 			o = _mm_mul_ps(o, d);
 		}
 		__m128i freeOut, occupiedOut;
-		encodeFour(fuseFree<Normalizes>(f, o, mass), ceiling, freeOut, occupiedOut);
+		encodeFour(fuseFree<Rule>(f, o, mass), ceiling, freeOut, occupiedOut);
 		const __m128i restamped = _mm_or_si128(_mm_and_si128(in.stamp, flags), stamp);
 		storeFour(c, {in.aside, freeOut, occupiedOut,
 					  _mm_or_si128(_mm_and_si128(saturated, in.stamp),
@@ -167,10 +187,10 @@ void EvidentialGridStorage::fuseQuietFreeRun(
 	}
 #endif
 	for (; idx < end; ++idx)
-		if (isLoud(idx, occupiedBelow))
+		if (isLoudFor<Rule>(idx, occupiedBelow))
 			loud.push_back(idx);
 		else
-			fuseSimpleFree<Decays, false, Normalizes>(idx, w);
+			fuseSimpleFree<Decays, false, Rule>(idx, w);
 }
 
 template <bool Decays>
@@ -226,13 +246,15 @@ template void EvidentialGridStorage::fuseFreeRunKeepingConflict<true>(
 	std::size_t, std::size_t, float);
 template void EvidentialGridStorage::fuseFreeRunKeepingConflict<false>(
 	std::size_t, std::size_t, float);
-template void EvidentialGridStorage::fuseQuietFreeRun<true, true>(
-	std::size_t, std::size_t, float, std::uint16_t, std::vector<std::size_t>&);
-template void EvidentialGridStorage::fuseQuietFreeRun<false, true>(
-	std::size_t, std::size_t, float, std::uint16_t, std::vector<std::size_t>&);
-template void EvidentialGridStorage::fuseQuietFreeRun<true, false>(
-	std::size_t, std::size_t, float, std::uint16_t, std::vector<std::size_t>&);
-template void EvidentialGridStorage::fuseQuietFreeRun<false, false>(
-	std::size_t, std::size_t, float, std::uint16_t, std::vector<std::size_t>&);
+#define MRPT_EVIDENTIAL_QUIET_RUN(Decays, Rule)                                  \
+	template void EvidentialGridStorage::fuseQuietFreeRun<Decays, FreeFusion::Rule>( \
+		std::size_t, std::size_t, float, std::uint16_t, std::vector<std::size_t>&);
+MRPT_EVIDENTIAL_QUIET_RUN(true, Dempster)
+MRPT_EVIDENTIAL_QUIET_RUN(false, Dempster)
+MRPT_EVIDENTIAL_QUIET_RUN(true, Yager)
+MRPT_EVIDENTIAL_QUIET_RUN(false, Yager)
+MRPT_EVIDENTIAL_QUIET_RUN(true, CautiousNormalized)
+MRPT_EVIDENTIAL_QUIET_RUN(false, CautiousNormalized)
+#undef MRPT_EVIDENTIAL_QUIET_RUN
 
 }  // namespace mrpt_evidential

@@ -73,21 +73,42 @@ __m256 eightFactors(const QuantizedCell* c, const TFreeRun& run)
 	return _mm256_loadu_ps(d);
 }
 
-/** Dempster's rule of the simple free mass w on normal parts (f, o) in
- * stored units, and the conflict of that fusion (fuseSimpleFree()); Yager's
- * rule when not `Normalizes`. */
+/** The simple free mass w fused into normal parts (f, o) in stored units
+ * with `Rule`, and the conflict of that fusion (Dempster's rule)
+ * (fuseSimpleFree()). */
 struct TFused8
 {
 	__m256 free, occupied, newConflict;
 };
-template <bool Normalizes = true>
+template <FreeFusion Rule = FreeFusion::Dempster>
 TFused8 fuseFree(__m256 f, __m256 o, __m256 w)
 {
 	const __m256 scale = _mm256_set1_ps(static_cast<float>(kMassScale)),
 				 one = _mm256_set1_ps(1.0f);
 	const __m256 u = _mm256_sub_ps(_mm256_sub_ps(scale, f), o);
+	if constexpr (Rule == FreeFusion::CautiousNormalized)
+	{
+		// EvidentialGridStorage::cautiousFree().
+		const __m256 tiny = _mm256_set1_ps(1e-30f);
+		const __m256 weightFree = _mm256_min_ps(
+			_mm256_div_ps(u, _mm256_max_ps(_mm256_add_ps(f, u), tiny)), _mm256_sub_ps(one, w));
+		const __m256 weightOccupied = _mm256_div_ps(u, _mm256_max_ps(_mm256_add_ps(o, u), tiny));
+		const __m256 keep = _mm256_max_ps(
+			_mm256_sub_ps(
+				_mm256_add_ps(weightFree, weightOccupied),
+				_mm256_mul_ps(weightFree, weightOccupied)),
+			tiny);
+		return {
+			_mm256_div_ps(
+				_mm256_mul_ps(_mm256_mul_ps(scale, _mm256_sub_ps(one, weightFree)), weightOccupied),
+				keep),
+			_mm256_div_ps(
+				_mm256_mul_ps(_mm256_mul_ps(scale, _mm256_sub_ps(one, weightOccupied)), weightFree),
+				keep),
+			_mm256_setzero_ps()};
+	}
 	const __m256 newConflict = _mm256_div_ps(_mm256_mul_ps(o, w), scale);
-	const __m256 normalize = Normalizes
+	const __m256 normalize = Rule == FreeFusion::Dempster
 		? _mm256_div_ps(one, _mm256_max_ps(_mm256_sub_ps(one, newConflict), _mm256_set1_ps(1e-30f)))
 		: one;
 	return {
@@ -115,7 +136,7 @@ __m256i restamped(__m256i stamps, const TFreeRun& run)
 }
 }  // namespace
 
-template <bool Decays, bool Normalizes>
+template <bool Decays, FreeFusion Rule>
 std::size_t fuseQuietBlocksOfEight(
 	QuantizedCell* cells, std::size_t idx, std::size_t end, const TFreeRun& run)
 {
@@ -127,10 +148,16 @@ std::size_t fuseQuietBlocksOfEight(
 	{
 		QuantizedCell* c = cells + idx;
 		const TLanes8 in = loadEight(c);
-		// isLoud() on eight cells: such a block is the caller's.
-		const __m256i loudLanes = _mm256_or_si256(
+		// isLoudFor() on eight cells: such a block is the caller's.
+		__m256i loudLanes = _mm256_or_si256(
 			_mm256_cmpgt_epi32(in.occupied, occupiedLimit),
 			_mm256_cmpeq_epi32(_mm256_and_si256(in.aside, judged), judged));
+		if constexpr (Rule == FreeFusion::CautiousNormalized)
+			loudLanes = _mm256_or_si256(
+				loudLanes,
+				_mm256_cmpgt_epi32(
+					_mm256_add_epi32(in.free, in.occupied),
+					_mm256_set1_epi32(static_cast<int>(kMassScale) - 1)));
 		if (_mm256_movemask_epi8(loudLanes) != 0) break;
 		// Free at the ceiling, nothing occupied, no decay: left as they are,
 		// stamp included (see the SSE2 kernel).
@@ -149,7 +176,7 @@ std::size_t fuseQuietBlocksOfEight(
 			o = _mm256_mul_ps(o, d);
 		}
 		__m256i freeOut, occupiedOut;
-		encode(fuseFree<Normalizes>(f, o, mass), ceiling, freeOut, occupiedOut);
+		encode(fuseFree<Rule>(f, o, mass), ceiling, freeOut, occupiedOut);
 		storeEight(c, {in.aside, freeOut, occupiedOut,
 					   _mm256_or_si256(_mm256_and_si256(saturated, in.stamp),
 									   _mm256_andnot_si256(saturated, restamped(in.stamp, run)))});
@@ -196,14 +223,16 @@ std::size_t fuseBlocksOfEightKeepingConflict(
 
 // Instantiated where the pragma still holds: a template takes the target
 // options of the place it is instantiated.
-template std::size_t fuseQuietBlocksOfEight<true, true>(
-	QuantizedCell*, std::size_t, std::size_t, const TFreeRun&);
-template std::size_t fuseQuietBlocksOfEight<false, true>(
-	QuantizedCell*, std::size_t, std::size_t, const TFreeRun&);
-template std::size_t fuseQuietBlocksOfEight<true, false>(
-	QuantizedCell*, std::size_t, std::size_t, const TFreeRun&);
-template std::size_t fuseQuietBlocksOfEight<false, false>(
-	QuantizedCell*, std::size_t, std::size_t, const TFreeRun&);
+#define MRPT_EVIDENTIAL_BLOCKS_OF_EIGHT(Decays, Rule)                  \
+	template std::size_t fuseQuietBlocksOfEight<Decays, FreeFusion::Rule>( \
+		QuantizedCell*, std::size_t, std::size_t, const TFreeRun&);
+MRPT_EVIDENTIAL_BLOCKS_OF_EIGHT(true, Dempster)
+MRPT_EVIDENTIAL_BLOCKS_OF_EIGHT(false, Dempster)
+MRPT_EVIDENTIAL_BLOCKS_OF_EIGHT(true, Yager)
+MRPT_EVIDENTIAL_BLOCKS_OF_EIGHT(false, Yager)
+MRPT_EVIDENTIAL_BLOCKS_OF_EIGHT(true, CautiousNormalized)
+MRPT_EVIDENTIAL_BLOCKS_OF_EIGHT(false, CautiousNormalized)
+#undef MRPT_EVIDENTIAL_BLOCKS_OF_EIGHT
 template std::size_t fuseBlocksOfEightKeepingConflict<true>(
 	QuantizedCell*, std::size_t, std::size_t, const TFreeRun&);
 template std::size_t fuseBlocksOfEightKeepingConflict<false>(

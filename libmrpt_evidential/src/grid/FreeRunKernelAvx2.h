@@ -4,6 +4,7 @@
  * it). */
 #pragma once
 
+#include <mrpt_evidential/grid/EvidentialGridStorage.h>
 #include <mrpt_evidential/grid/QuantizedMass.h>
 
 #include <cstddef>
@@ -37,10 +38,11 @@ struct TFreeRun
 extern const bool kAvx2Available;
 
 /** Fuses run.w into cells[idx, end) eight at a time, with the results of
- * fuseSimpleFree<Decays, false, Normalizes>() bit for bit, and stops at the
- * first block of eight that holds a loud cell or when fewer than eight are
- * left: returns the index it stopped at. Call only when kAvx2Available. */
-template <bool Decays, bool Normalizes>
+ * fuseSimpleFree<Decays, false, Rule>() bit for bit, and stops at the first
+ * block of eight that holds a cell isLoudFor<Rule>() calls loud or when
+ * fewer than eight are left: returns the index it stopped at. Call only
+ * when kAvx2Available. */
+template <bool Decays, FreeFusion Rule>
 std::size_t fuseQuietBlocksOfEight(
 	QuantizedCell* cells, std::size_t idx, std::size_t end, const TFreeRun& run);
 

@@ -30,13 +30,16 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 	const FusionRule rule = io.fusionRule;
 	const ConflictHandling handling = io.conflictHandling;
 	// Dempster's rule, however it is asked for, has a kernel of its own, and
-	// so has Yager's (Dubois and Prade's is the same on {F, O} for cells
-	// without conflict): the bulk of a scan's cells fused in blocks.
+	// so have Yager's (Dubois and Prade's is the same on {F, O} for cells
+	// without conflict) and the cautious rule normalized: the bulk of a
+	// scan's cells fused in blocks.
 	const bool dempster = rule == FusionRule::Dempster ||
 		(rule == FusionRule::Conjunctive && handling == ConflictHandling::Normalize);
 	const bool yager = rule == FusionRule::Yager || rule == FusionRule::DuboisPrade ||
 		(rule == FusionRule::Conjunctive && handling == ConflictHandling::ToUnknown);
-	const bool inBlocks = dempster || yager;
+	const bool cautious =
+		rule == FusionRule::Cautious && handling == ConflictHandling::Normalize;
+	const bool inBlocks = dempster || yager || cautious;
 	const Mass& uniform = transform.uniformMass();
 
 	const auto single = [&](CMotionDetector& detector, std::size_t idx, const Mass& observed,
@@ -76,12 +79,16 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 			}
 			// The quiet cells in bulk, then the loud ones one by one, in order.
 			band.loud.clear();
+			const auto wf = static_cast<float>(w);
 			if (yager)
-				m_grid.fuseQuietFreeRun<kDecays, false>(
-					first, count, static_cast<float>(w), occupiedBelow, band.loud);
+				m_grid.fuseQuietFreeRun<kDecays, FreeFusion::Yager>(
+					first, count, wf, occupiedBelow, band.loud);
+			else if (cautious)
+				m_grid.fuseQuietFreeRun<kDecays, FreeFusion::CautiousNormalized>(
+					first, count, wf, occupiedBelow, band.loud);
 			else
-				m_grid.fuseQuietFreeRun<kDecays, true>(
-					first, count, static_cast<float>(w), occupiedBelow, band.loud);
+				m_grid.fuseQuietFreeRun<kDecays, FreeFusion::Dempster>(
+					first, count, wf, occupiedBelow, band.loud);
 			for (const std::size_t idx : band.loud) single(band.motion, idx, uniform, false);
 		};
 		visitRowsCloned(
@@ -98,13 +105,16 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 				// its own threshold, a division, is then not worked out.
 				else if (
 					inBlocks && observed.occupied == 0.0 && observed.conflict == 0.0 &&
-					!(m_grid.isLoud(idx, 1) && m_grid.isLoud(idx, occupiedBelowFor(observed.free))))
+					!(m_grid.isLoud(idx, 1) && m_grid.isLoud(idx, occupiedBelowFor(observed.free))) &&
+					!(cautious && m_grid.holdsNoIgnorance(idx)))
 				{
+					const auto wf = static_cast<float>(observed.free);
 					if (yager)
-						m_grid.fuseSimpleFree<kDecays, false, false>(
-							idx, static_cast<float>(observed.free));
+						m_grid.fuseSimpleFree<kDecays, false, FreeFusion::Yager>(idx, wf);
+					else if (cautious)
+						m_grid.fuseSimpleFree<kDecays, false, FreeFusion::CautiousNormalized>(idx, wf);
 					else
-						m_grid.fuseSimpleFree<kDecays, false>(idx, static_cast<float>(observed.free));
+						m_grid.fuseSimpleFree<kDecays, false>(idx, wf);
 				}
 				else
 					single(band.motion, idx, observed, false);

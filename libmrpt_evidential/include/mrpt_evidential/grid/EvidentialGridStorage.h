@@ -16,6 +16,19 @@
 
 namespace mrpt_evidential
 {
+/** The rule by which the bulk kernels fuse a simple free mass into a cell of
+ * a grid without conflict. */
+enum class FreeFusion
+{
+	/** Dempster's rule: the conflict normalized away. */
+	Dempster,
+	/** Yager's rule: the conflict to Omega (for masses without conflict, on
+	 * {F, O}, also Dubois and Prade's rule). */
+	Yager,
+	/** Denoeux's cautious rule, its conflict normalized away. */
+	CautiousNormalized
+};
+
 /** The cells of an evidential grid with their decay and motion events.
  *
  * Decay is classical discounting with rate 1 - exp(-decayRate dt) after dt
@@ -203,14 +216,15 @@ class EvidentialGridStorage
 	 * once): a float holds a stored value to 1/256 of a step. fuseConjunctive()
 	 * in a grid that keeps conflict, fuseNormalized() in one that does not:
 	 * `KeepsConflict` must be keepsConflict(). `Decays` false skips the
-	 * decay, for grids whose decay rate is 0. `Normalizes` false (a grid
-	 * without conflict only) gives the fusion's conflict to Omega instead of
-	 * normalizing it away: Yager's rule, and Dubois and Prade's, which on
-	 * {F, O} is the same for masses without conflict. */
-	template <bool Decays, bool KeepsConflict, bool Normalizes = true>
+	 * decay, for grids whose decay rate is 0. `Rule`: Dempster's rule, or in
+	 * a grid without conflict Yager's, or the cautious rule (only on a cell
+	 * that isLoudFor() the cautious rule does not call loud). */
+	template <bool Decays, bool KeepsConflict, FreeFusion Rule = FreeFusion::Dempster>
 	void fuseSimpleFree(std::size_t idx, float w)
 	{
-		static_assert(Normalizes || !KeepsConflict, "a grid that keeps conflict normalizes");
+		static_assert(
+			Rule == FreeFusion::Dempster || !KeepsConflict,
+			"a grid that keeps conflict fuses with the conjunctive rule (Dempster's on the normal part)");
 		QuantizedCell& c = m_cells[idx];
 		// Free at the ceiling, nothing occupied, no decay: the fusion gives
 		// the cell back as it was, and its stamp means nothing.
@@ -241,9 +255,18 @@ class EvidentialGridStorage
 			}
 		}
 		const float u = scale - f - o;
+		if constexpr (Rule == FreeFusion::CautiousNormalized)
+		{
+			float nf, no;
+			cautiousFree(f, o, u, w, nf, no);
+			encodeScaledNormal(c, nf, no, m_ceiling);
+			restamp(c);
+			return;
+		}
 		const float newConflict = o * w / scale;
 		// At total conflict both products are 0 and n becomes vacuous.
-		const float normalize = Normalizes ? 1.0f / std::max(1.0f - newConflict, 1e-30f) : 1.0f;
+		const float normalize =
+			Rule == FreeFusion::Dempster ? 1.0f / std::max(1.0f - newConflict, 1e-30f) : 1.0f;
 		if constexpr (KeepsConflict)
 			encodeScaled(
 				c, scale * (1.0f - keep * (1.0f - newConflict)), (f + u * w) * normalize,
@@ -261,17 +284,48 @@ class EvidentialGridStorage
 		const QuantizedCell& c = m_cells[idx];
 		return c.occupied >= occupiedBelow || (c.aside & kEventJudgedWhenSeenFree) != 0;
 	}
+	/** True when cell idx stores no ignorance: n(F) + n(O) at the scale. */
+	bool holdsNoIgnorance(std::size_t idx) const
+	{
+		const QuantizedCell& c = m_cells[idx];
+		return c.free + c.occupied >= static_cast<int>(kMassScale);
+	}
+	/** isLoud(), and for the cautious rule also a cell that holdsNoIgnorance():
+	 * the rule's weights need some, and the general rule, in double
+	 * precision, discounts such a cell first. */
+	template <FreeFusion Rule>
+	bool isLoudFor(std::size_t idx, std::uint16_t occupiedBelow) const
+	{
+		return isLoud(idx, occupiedBelow) ||
+			(Rule == FreeFusion::CautiousNormalized && holdsNoIgnorance(idx));
+	}
+	/** The cautious rule of the simple free mass w on the normal parts
+	 * (f, o), u = scale - f - o, in stored units, normalized: n(F) and n(O)
+	 * in stored units. With w's weight 1 - w on F and 1 on O and the cell's
+	 * u / (f + u) on F, u / (o + u) on O (and at least 1 on the empty set,
+	 * as for every mass without conflict), the rule keeps the smaller weight
+	 * of each. The kernels do the same operations in the same order. */
+	static void cautiousFree(float f, float o, float u, float w, float& nf, float& no)
+	{
+		const float scale = static_cast<float>(kMassScale), tiny = 1e-30f;
+		const float weightFree = std::min(u / std::max(f + u, tiny), 1.0f - w);
+		const float weightOccupied = u / std::max(o + u, tiny);
+		const float keep =
+			std::max(weightFree + weightOccupied - weightFree * weightOccupied, tiny);
+		nf = scale * (1.0f - weightFree) * weightOccupied / keep;
+		no = scale * (1.0f - weightOccupied) * weightFree / keep;
+	}
 	/** fuseSimpleFree<Decays, true>() (a grid that keeps conflict) into
 	 * every cell of [first, first + count), four at a time where the target
 	 * has SSE2, eight where the processor has AVX2, with the same results. */
 	template <bool Decays>
 	void fuseFreeRunKeepingConflict(std::size_t first, std::size_t count, float w);
-	/** fuseSimpleFree<Decays, false, Normalizes>() (a grid without
-	 * conflict) into every quiet cell of [first, first + count) (see
-	 * isLoud()); loud cells are left unfused, their indices appended to
-	 * `loud` in order. Four cells at a time where the target has SSE2, eight
-	 * where the processor has AVX2, with the same results. */
-	template <bool Decays, bool Normalizes = true>
+	/** fuseSimpleFree<Decays, false, Rule>() (a grid without conflict) into
+	 * every quiet cell of [first, first + count) (see isLoudFor()); loud
+	 * cells are left unfused, their indices appended to `loud` in order.
+	 * Four cells at a time where the target has SSE2, eight where the
+	 * processor has AVX2, with the same results. */
+	template <bool Decays, FreeFusion Rule = FreeFusion::Dempster>
 	void fuseQuietFreeRun(
 		std::size_t first, std::size_t count, float w, std::uint16_t occupiedBelow,
 		std::vector<std::size_t>& loud);
