@@ -1,14 +1,15 @@
 /* The bulk kernels of FreeRunKernel.cpp: a run of cells fused at once gives
  * the cells, bit for bit, that fusing them one by one gives (one mass for the
  * run or one per cell; with and without decay; keeping conflict or not;
- * Dempster's rule, Yager's or the cautious rule), and lists the loud cells it
- * leaves, in order; cell by cell, the single-precision fusion reads as the
- * general rule's. */
+ * Dempster's rule, Yager's or the cautious rule, normalized or not), and lists
+ * the loud cells it leaves, in order; cell by cell, the single-precision
+ * fusion reads as the general rule's. */
 #include <gtest/gtest.h>
 #include <mrpt_evidential/grid/EvidentialGridStorage.h>
 
 #include <cstdint>
 #include <random>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -95,6 +96,7 @@ void forEachFreeFusion(Check&& check)
 	check(std::integral_constant<FreeFusion, FreeFusion::Dempster>{});
 	check(std::integral_constant<FreeFusion, FreeFusion::Yager>{});
 	check(std::integral_constant<FreeFusion, FreeFusion::CautiousNormalized>{});
+	check(std::integral_constant<FreeFusion, FreeFusion::CautiousToUnknown>{});
 }
 }  // namespace
 
@@ -237,16 +239,30 @@ TEST(GridStorage, FreeRunsKeepingConflictFuseAsCellByCell)
 }
 
 // The single-precision fusion of a simple free mass, as the bulk runs it,
-// reads as the general rule's fusion to within the stored values' step:
+// reads as the general rule's fusion to within the stored values' step, for
+// each rule and conflict handling the map gives the kernels:
 // Dempster's rule, Yager's (which Dubois and Prade's rule and the
 // conjunctive rule with its conflict to Omega equal here) and the cautious
-// rule normalized.
+// rule, normalized or with its conflict to Omega.
 TEST(GridStorage, SimpleFreeFusionReadsAsTheGeneralRule)
 {
+	struct TCase
+	{
+		FusionRule rule;
+		ConflictHandling handling;
+		FreeFusion kernel;
+	};
+	const ConflictHandling normalize = ConflictHandling::Normalize,
+						   toUnknown = ConflictHandling::ToUnknown;
 	for (const double rate : {0.0, 0.05})
-		for (const FusionRule rule :
-			 {FusionRule::Dempster, FusionRule::Yager, FusionRule::DuboisPrade,
-			  FusionRule::Cautious})
+		for (const TCase& c : std::vector<TCase>{
+				 {FusionRule::Dempster, normalize, FreeFusion::Dempster},
+				 {FusionRule::Conjunctive, normalize, FreeFusion::Dempster},
+				 {FusionRule::Yager, normalize, FreeFusion::Yager},
+				 {FusionRule::DuboisPrade, normalize, FreeFusion::Yager},
+				 {FusionRule::Conjunctive, toUnknown, FreeFusion::Yager},
+				 {FusionRule::Cautious, normalize, FreeFusion::CautiousNormalized},
+				 {FusionRule::Cautious, toUnknown, FreeFusion::CautiousToUnknown}})
 			for (const float w : {0.05f, 0.37f, 0.7f, 0.99f})
 			{
 				EvidentialGridStorage simple = gridWithVariedCells(rate, 3);
@@ -257,32 +273,34 @@ TEST(GridStorage, SimpleFreeFusionReadsAsTheGeneralRule)
 				{
 					// The cautious rule's kernels leave cells without
 					// ignorance to the general rule.
-					if (rule == FusionRule::Cautious && simple.holdsNoIgnorance(idx)) continue;
-					if (rule == FusionRule::Dempster)
-						simple.fuseSimpleFree<true, false, FreeFusion::Dempster>(idx, w);
-					else if (rule == FusionRule::Cautious)
-						simple.fuseSimpleFree<true, false, FreeFusion::CautiousNormalized>(idx, w);
-					else
-						simple.fuseSimpleFree<true, false, FreeFusion::Yager>(idx, w);
-					general.fuse(idx, Mass::simpleFree(w), rule, ConflictHandling::Normalize);
+					if (isCautious(c.kernel) && simple.holdsNoIgnorance(idx)) continue;
+					switch (c.kernel)
+					{
+						case FreeFusion::Dempster:
+							simple.fuseSimpleFree<true, false, FreeFusion::Dempster>(idx, w);
+							break;
+						case FreeFusion::Yager:
+							simple.fuseSimpleFree<true, false, FreeFusion::Yager>(idx, w);
+							break;
+						case FreeFusion::CautiousNormalized:
+							simple.fuseSimpleFree<true, false, FreeFusion::CautiousNormalized>(idx, w);
+							break;
+						case FreeFusion::CautiousToUnknown:
+							simple.fuseSimpleFree<true, false, FreeFusion::CautiousToUnknown>(idx, w);
+							break;
+					}
+					general.fuse(idx, Mass::simpleFree(w), c.rule, c.handling);
 					++fused;
 				}
 				EXPECT_GT(fused, cells / 2);
-				if (rule == FusionRule::Yager)
-				{
-					EvidentialGridStorage toUnknown = gridWithVariedCells(rate, 3);
-					for (std::size_t idx = 0; idx < cells; ++idx)
-						toUnknown.fuse(
-							idx, Mass::simpleFree(w), FusionRule::Conjunctive,
-							ConflictHandling::ToUnknown);
-					ASSERT_TRUE(toUnknown.cells() == general.cells()) << rate << " " << w;
-				}
+				const std::string what = std::to_string(static_cast<int>(c.rule)) + " " +
+					std::to_string(static_cast<int>(c.handling)) + " " + std::to_string(w);
 				for (std::size_t idx = 0; idx < cells; ++idx)
 				{
 					const Mass a = simple.read(idx), b = general.read(idx);
-					ASSERT_NEAR(a.free, b.free, 1.5 / kMassScale) << int(rule) << " " << idx;
-					ASSERT_NEAR(a.occupied, b.occupied, 1.5 / kMassScale) << int(rule) << " " << idx;
-					ASSERT_NEAR(a.unknown, b.unknown, 3.0 / kMassScale) << int(rule) << " " << idx;
+					ASSERT_NEAR(a.free, b.free, 1.5 / kMassScale) << what << " cell " << idx;
+					ASSERT_NEAR(a.occupied, b.occupied, 1.5 / kMassScale) << what << " cell " << idx;
+					ASSERT_NEAR(a.unknown, b.unknown, 3.0 / kMassScale) << what << " cell " << idx;
 					ASSERT_EQ(a.conflict, 0.0);
 				}
 			}

@@ -64,21 +64,25 @@ TFused fuseFree(__m128 f, __m128 o, __m128 w)
 {
 	const __m128 scale = _mm_set1_ps(static_cast<float>(kMassScale)), one = _mm_set1_ps(1.0f);
 	const __m128 u = _mm_sub_ps(_mm_sub_ps(scale, f), o);
-	if constexpr (Rule == FreeFusion::CautiousNormalized)
+	if constexpr (isCautious(Rule))
 	{
 		// EvidentialGridStorage::cautiousFree().
 		const __m128 tiny = _mm_set1_ps(1e-30f);
 		const __m128 weightFree =
 			_mm_min_ps(_mm_div_ps(u, _mm_max_ps(_mm_add_ps(f, u), tiny)), _mm_sub_ps(one, w));
 		const __m128 weightOccupied = _mm_div_ps(u, _mm_max_ps(_mm_add_ps(o, u), tiny));
-		const __m128 keep = _mm_max_ps(
-			_mm_sub_ps(
-				_mm_add_ps(weightFree, weightOccupied), _mm_mul_ps(weightFree, weightOccupied)),
-			tiny);
-		return {
-			_mm_div_ps(_mm_mul_ps(_mm_mul_ps(scale, _mm_sub_ps(one, weightFree)), weightOccupied), keep),
-			_mm_div_ps(_mm_mul_ps(_mm_mul_ps(scale, _mm_sub_ps(one, weightOccupied)), weightFree), keep),
-			_mm_setzero_ps()};
+		__m128 nf = _mm_mul_ps(_mm_mul_ps(scale, _mm_sub_ps(one, weightFree)), weightOccupied),
+			   no = _mm_mul_ps(_mm_mul_ps(scale, _mm_sub_ps(one, weightOccupied)), weightFree);
+		if constexpr (Rule == FreeFusion::CautiousNormalized)
+		{
+			const __m128 keep = _mm_max_ps(
+				_mm_sub_ps(
+					_mm_add_ps(weightFree, weightOccupied), _mm_mul_ps(weightFree, weightOccupied)),
+				tiny);
+			nf = _mm_div_ps(nf, keep);
+			no = _mm_div_ps(no, keep);
+		}
+		return {nf, no, _mm_setzero_ps()};
 	}
 	const __m128 newConflict = _mm_div_ps(_mm_mul_ps(o, w), scale);
 	// At total conflict both products are 0 and n becomes vacuous.
@@ -148,7 +152,7 @@ void EvidentialGridStorage::fuseQuietFreeRun(
 		__m128i loudLanes = _mm_or_si128(
 			_mm_cmpgt_epi32(in.occupied, occupiedLimit),
 			_mm_cmpeq_epi32(_mm_and_si128(in.aside, judged), judged));
-		if constexpr (Rule == FreeFusion::CautiousNormalized)
+		if constexpr (isCautious(Rule))
 			loudLanes = _mm_or_si128(
 				loudLanes, _mm_cmpgt_epi32(_mm_add_epi32(in.free, in.occupied), noIgnorance));
 		if (_mm_movemask_epi8(loudLanes) != 0)
@@ -255,6 +259,8 @@ MRPT_EVIDENTIAL_QUIET_RUN(true, Yager)
 MRPT_EVIDENTIAL_QUIET_RUN(false, Yager)
 MRPT_EVIDENTIAL_QUIET_RUN(true, CautiousNormalized)
 MRPT_EVIDENTIAL_QUIET_RUN(false, CautiousNormalized)
+MRPT_EVIDENTIAL_QUIET_RUN(true, CautiousToUnknown)
+MRPT_EVIDENTIAL_QUIET_RUN(false, CautiousToUnknown)
 #undef MRPT_EVIDENTIAL_QUIET_RUN
 
 }  // namespace mrpt_evidential

@@ -86,26 +86,26 @@ TFused8 fuseFree(__m256 f, __m256 o, __m256 w)
 	const __m256 scale = _mm256_set1_ps(static_cast<float>(kMassScale)),
 				 one = _mm256_set1_ps(1.0f);
 	const __m256 u = _mm256_sub_ps(_mm256_sub_ps(scale, f), o);
-	if constexpr (Rule == FreeFusion::CautiousNormalized)
+	if constexpr (isCautious(Rule))
 	{
 		// EvidentialGridStorage::cautiousFree().
 		const __m256 tiny = _mm256_set1_ps(1e-30f);
 		const __m256 weightFree = _mm256_min_ps(
 			_mm256_div_ps(u, _mm256_max_ps(_mm256_add_ps(f, u), tiny)), _mm256_sub_ps(one, w));
 		const __m256 weightOccupied = _mm256_div_ps(u, _mm256_max_ps(_mm256_add_ps(o, u), tiny));
-		const __m256 keep = _mm256_max_ps(
-			_mm256_sub_ps(
-				_mm256_add_ps(weightFree, weightOccupied),
-				_mm256_mul_ps(weightFree, weightOccupied)),
-			tiny);
-		return {
-			_mm256_div_ps(
-				_mm256_mul_ps(_mm256_mul_ps(scale, _mm256_sub_ps(one, weightFree)), weightOccupied),
-				keep),
-			_mm256_div_ps(
-				_mm256_mul_ps(_mm256_mul_ps(scale, _mm256_sub_ps(one, weightOccupied)), weightFree),
-				keep),
-			_mm256_setzero_ps()};
+		__m256 nf = _mm256_mul_ps(_mm256_mul_ps(scale, _mm256_sub_ps(one, weightFree)), weightOccupied),
+			   no = _mm256_mul_ps(_mm256_mul_ps(scale, _mm256_sub_ps(one, weightOccupied)), weightFree);
+		if constexpr (Rule == FreeFusion::CautiousNormalized)
+		{
+			const __m256 keep = _mm256_max_ps(
+				_mm256_sub_ps(
+					_mm256_add_ps(weightFree, weightOccupied),
+					_mm256_mul_ps(weightFree, weightOccupied)),
+				tiny);
+			nf = _mm256_div_ps(nf, keep);
+			no = _mm256_div_ps(no, keep);
+		}
+		return {nf, no, _mm256_setzero_ps()};
 	}
 	const __m256 newConflict = _mm256_div_ps(_mm256_mul_ps(o, w), scale);
 	const __m256 normalize = Rule == FreeFusion::Dempster
@@ -152,7 +152,7 @@ std::size_t fuseQuietBlocksOfEight(
 		__m256i loudLanes = _mm256_or_si256(
 			_mm256_cmpgt_epi32(in.occupied, occupiedLimit),
 			_mm256_cmpeq_epi32(_mm256_and_si256(in.aside, judged), judged));
-		if constexpr (Rule == FreeFusion::CautiousNormalized)
+		if constexpr (isCautious(Rule))
 			loudLanes = _mm256_or_si256(
 				loudLanes,
 				_mm256_cmpgt_epi32(
@@ -232,6 +232,8 @@ MRPT_EVIDENTIAL_BLOCKS_OF_EIGHT(true, Yager)
 MRPT_EVIDENTIAL_BLOCKS_OF_EIGHT(false, Yager)
 MRPT_EVIDENTIAL_BLOCKS_OF_EIGHT(true, CautiousNormalized)
 MRPT_EVIDENTIAL_BLOCKS_OF_EIGHT(false, CautiousNormalized)
+MRPT_EVIDENTIAL_BLOCKS_OF_EIGHT(true, CautiousToUnknown)
+MRPT_EVIDENTIAL_BLOCKS_OF_EIGHT(false, CautiousToUnknown)
 #undef MRPT_EVIDENTIAL_BLOCKS_OF_EIGHT
 template std::size_t fuseBlocksOfEightKeepingConflict<true>(
 	QuantizedCell*, std::size_t, std::size_t, const TFreeRun&);

@@ -29,17 +29,40 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 	motion.begin(rules);
 	const FusionRule rule = io.fusionRule;
 	const ConflictHandling handling = io.conflictHandling;
-	// Dempster's rule, however it is asked for, has a kernel of its own, and
-	// so have Yager's (Dubois and Prade's is the same on {F, O} for cells
-	// without conflict) and the cautious rule normalized: the bulk of a
-	// scan's cells fused in blocks.
-	const bool dempster = rule == FusionRule::Dempster ||
-		(rule == FusionRule::Conjunctive && handling == ConflictHandling::Normalize);
-	const bool yager = rule == FusionRule::Yager || rule == FusionRule::DuboisPrade ||
-		(rule == FusionRule::Conjunctive && handling == ConflictHandling::ToUnknown);
-	const bool cautious =
-		rule == FusionRule::Cautious && handling == ConflictHandling::Normalize;
-	const bool inBlocks = dempster || yager || cautious;
+	// The rule of the bulk kernels that fuse the simple free masses of most
+	// of a scan's cells: every rule has one. Dubois and Prade's rule, on
+	// {F, O} and for cells without conflict, and the conjunctive rule with
+	// its conflict to Omega are Yager's.
+	const FreeFusion bulkRule = [&] {
+		const bool normalizes = handling == ConflictHandling::Normalize;
+		switch (rule)
+		{
+			case FusionRule::Dempster: return FreeFusion::Dempster;
+			case FusionRule::Yager:
+			case FusionRule::DuboisPrade: return FreeFusion::Yager;
+			case FusionRule::Cautious:
+				return normalizes ? FreeFusion::CautiousNormalized : FreeFusion::CautiousToUnknown;
+			case FusionRule::Conjunctive: break;
+		}
+		return normalizes ? FreeFusion::Dempster : FreeFusion::Yager;
+	}();
+	// Calls fuse() with the bulk rule as a compile-time constant.
+	const auto withBulkRule = [bulkRule](auto&& fuse) {
+		switch (bulkRule)
+		{
+			case FreeFusion::Yager:
+				return fuse(std::integral_constant<FreeFusion, FreeFusion::Yager>{});
+			case FreeFusion::CautiousNormalized:
+				return fuse(std::integral_constant<FreeFusion, FreeFusion::CautiousNormalized>{});
+			case FreeFusion::CautiousToUnknown:
+				return fuse(std::integral_constant<FreeFusion, FreeFusion::CautiousToUnknown>{});
+			case FreeFusion::Dempster: break;
+		}
+		return fuse(std::integral_constant<FreeFusion, FreeFusion::Dempster>{});
+	};
+	// Dempster's rule, however it is asked for, has a cell-by-cell fusion of
+	// its own too.
+	const bool dempster = bulkRule == FreeFusion::Dempster;
 	const Mass& uniform = transform.uniformMass();
 
 	const auto single = [&](CMotionDetector& detector, std::size_t idx, const Mass& observed,
@@ -71,24 +94,12 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 		auto hits = impacts.cursorFrom(g.index(0, band.firstRow));
 		constexpr bool kDecays = decltype(decays)::value;
 		const auto fuseRun = [&](std::size_t first, std::size_t count) {
-			if (!inBlocks)
-			{
-				for (std::size_t idx = first; idx < first + count; ++idx)
-					single(band.motion, idx, uniform, false);
-				return;
-			}
 			// The quiet cells in bulk, then the loud ones one by one, in order.
 			band.loud.clear();
-			const auto wf = static_cast<float>(w);
-			if (yager)
-				m_grid.fuseQuietFreeRun<kDecays, FreeFusion::Yager>(
-					first, count, wf, occupiedBelow, band.loud);
-			else if (cautious)
-				m_grid.fuseQuietFreeRun<kDecays, FreeFusion::CautiousNormalized>(
-					first, count, wf, occupiedBelow, band.loud);
-			else
-				m_grid.fuseQuietFreeRun<kDecays, FreeFusion::Dempster>(
-					first, count, wf, occupiedBelow, band.loud);
+			withBulkRule([&](auto bulk) {
+				m_grid.fuseQuietFreeRun<kDecays, decltype(bulk)::value>(
+					first, count, static_cast<float>(w), occupiedBelow, band.loud);
+			});
 			for (const std::size_t idx : band.loud) single(band.motion, idx, uniform, false);
 		};
 		visitRowsCloned(
@@ -104,18 +115,13 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 				// A cell quiet at the lowest threshold (1) is quiet at every w:
 				// its own threshold, a division, is then not worked out.
 				else if (
-					inBlocks && observed.occupied == 0.0 && observed.conflict == 0.0 &&
+					observed.occupied == 0.0 && observed.conflict == 0.0 &&
 					!(m_grid.isLoud(idx, 1) && m_grid.isLoud(idx, occupiedBelowFor(observed.free))) &&
-					!(cautious && m_grid.holdsNoIgnorance(idx)))
-				{
-					const auto wf = static_cast<float>(observed.free);
-					if (yager)
-						m_grid.fuseSimpleFree<kDecays, false, FreeFusion::Yager>(idx, wf);
-					else if (cautious)
-						m_grid.fuseSimpleFree<kDecays, false, FreeFusion::CautiousNormalized>(idx, wf);
-					else
-						m_grid.fuseSimpleFree<kDecays, false>(idx, wf);
-				}
+					!(isCautious(bulkRule) && m_grid.holdsNoIgnorance(idx)))
+					withBulkRule([&](auto bulk) {
+						m_grid.fuseSimpleFree<kDecays, false, decltype(bulk)::value>(
+							idx, static_cast<float>(observed.free));
+					});
 				else
 					single(band.motion, idx, observed, false);
 			},

@@ -26,8 +26,15 @@ enum class FreeFusion
 	 * {F, O}, also Dubois and Prade's rule). */
 	Yager,
 	/** Denoeux's cautious rule, its conflict normalized away. */
-	CautiousNormalized
+	CautiousNormalized,
+	/** Denoeux's cautious rule, its conflict to Omega. */
+	CautiousToUnknown
 };
+/** True for the cautious rule, however its conflict is handled. */
+constexpr bool isCautious(FreeFusion rule)
+{
+	return rule == FreeFusion::CautiousNormalized || rule == FreeFusion::CautiousToUnknown;
+}
 
 /** The cells of an evidential grid with their decay and motion events.
  *
@@ -255,10 +262,10 @@ class EvidentialGridStorage
 			}
 		}
 		const float u = scale - f - o;
-		if constexpr (Rule == FreeFusion::CautiousNormalized)
+		if constexpr (isCautious(Rule))
 		{
 			float nf, no;
-			cautiousFree(f, o, u, w, nf, no);
+			cautiousFree<Rule == FreeFusion::CautiousNormalized>(f, o, u, w, nf, no);
 			encodeScaledNormal(c, nf, no, m_ceiling);
 			restamp(c);
 			return;
@@ -296,24 +303,30 @@ class EvidentialGridStorage
 	template <FreeFusion Rule>
 	bool isLoudFor(std::size_t idx, std::uint16_t occupiedBelow) const
 	{
-		return isLoud(idx, occupiedBelow) ||
-			(Rule == FreeFusion::CautiousNormalized && holdsNoIgnorance(idx));
+		return isLoud(idx, occupiedBelow) || (isCautious(Rule) && holdsNoIgnorance(idx));
 	}
 	/** The cautious rule of the simple free mass w on the normal parts
-	 * (f, o), u = scale - f - o, in stored units, normalized: n(F) and n(O)
-	 * in stored units. With w's weight 1 - w on F and 1 on O and the cell's
+	 * (f, o), u = scale - f - o, in stored units: n(F) and n(O) in stored
+	 * units, the conflict normalized away or (not `Normalizes`) given to
+	 * Omega. With w's weight 1 - w on F and 1 on O and the cell's
 	 * u / (f + u) on F, u / (o + u) on O (and at least 1 on the empty set,
 	 * as for every mass without conflict), the rule keeps the smaller weight
 	 * of each. The kernels do the same operations in the same order. */
+	template <bool Normalizes>
 	static void cautiousFree(float f, float o, float u, float w, float& nf, float& no)
 	{
 		const float scale = static_cast<float>(kMassScale), tiny = 1e-30f;
 		const float weightFree = std::min(u / std::max(f + u, tiny), 1.0f - w);
 		const float weightOccupied = u / std::max(o + u, tiny);
-		const float keep =
-			std::max(weightFree + weightOccupied - weightFree * weightOccupied, tiny);
-		nf = scale * (1.0f - weightFree) * weightOccupied / keep;
-		no = scale * (1.0f - weightOccupied) * weightFree / keep;
+		nf = scale * (1.0f - weightFree) * weightOccupied;
+		no = scale * (1.0f - weightOccupied) * weightFree;
+		if constexpr (Normalizes)
+		{
+			const float keep =
+				std::max(weightFree + weightOccupied - weightFree * weightOccupied, tiny);
+			nf /= keep;
+			no /= keep;
+		}
 	}
 	/** fuseSimpleFree<Decays, true>() (a grid that keeps conflict) into
 	 * every cell of [first, first + count), four at a time where the target
