@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "cloud/CloudSectors.h"
+#include "cloud/GroundPlane.h"
 #include "support/clouds.h"
 
 using namespace mrpt_evidential;
@@ -81,6 +82,40 @@ TEST(Clouds, PlaneRemovesTheGroundOfASlope)
 	CEvidentialGridMap2D band = makeMap(GroundRemoval::Height);
 	band.insertObservation(*cloud, CPose3D());
 	EXPECT_GT(band.countDecisions().occupied, 100u);
+}
+
+TEST(Clouds, PointsNotFiniteLeaveTheGroundPlaneAlone)
+{
+	// The slope's cloud in the robot's frame (the sensor 1.8 m up).
+	const auto cloud = test::lidarCloud({5.0 * kDeg, {wallAhead()}});
+	std::vector<TPoint3Df> points;
+	for (std::size_t i = 0; i < cloud->pointcloud->size(); ++i)
+	{
+		float x, y, z;
+		cloud->pointcloud->getPoint(i, x, y, z);
+		points.emplace_back(x, y, z + 1.8f);
+	}
+	TGroundFit fit;
+	fit.sensorZ = 1.8;
+	std::vector<int> columns;
+	const auto clean = fitGroundPlane(points, fit, columns);
+	ASSERT_TRUE(clean);
+	EXPECT_NEAR(clean->a, std::tan(5.0 * kDeg), 1e-3);
+	// Low enough to pass for ground but for their infinite or NaN
+	// coordinates: the plane must not move by a bit.
+	const float inf = std::numeric_limits<float>::infinity();
+	const float nan = std::numeric_limits<float>::quiet_NaN();
+	points.insert(points.begin() + 100, {inf, 0.0f, 0.0f});
+	points.emplace_back(1.0f, -inf, 0.0f);
+	points.emplace_back(nan, 1.0f, 0.0f);
+	// Whatever the plane's signs, one of these is at a NaN height.
+	points.emplace_back(inf, inf, 0.0f);
+	points.emplace_back(inf, -inf, 0.0f);
+	const auto dirty = fitGroundPlane(points, fit, columns);
+	ASSERT_TRUE(dirty);
+	EXPECT_EQ(dirty->a, clean->a);
+	EXPECT_EQ(dirty->b, clean->b);
+	EXPECT_EQ(dirty->c, clean->c);
 }
 
 TEST(Clouds, GroundReturnsProveFreeSpaceOrNothing)

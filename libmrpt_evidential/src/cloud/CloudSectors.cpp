@@ -2,82 +2,139 @@
 
 #include "cloud/CloudSectors.h"
 
+#include <mrpt_evidential/support/CpuClones.h>
 #include <mrpt_evidential/support/FastArcTangent.h>
 
+#include <cfloat>
 #include <cmath>
 
 #include "cloud/GroundPlane.h"
 
 namespace mrpt_evidential
 {
+namespace
+{
+/** A point's code (TCloudScratch::codes): its sector, with kGround for a
+ * ground point, or one of the two marks. */
+constexpr std::uint32_t kDropped = 0xFFFFFFFFu, kAboveRobot = 0xFFFFFFFEu,
+						kGround = 0x80000000u;
+
+/** What classify() needs of the rules, the plane and the poses. */
+struct TClassification
+{
+	double sensorX, sensorY, sensorZ;
+	/** The robot's rotation's first two rows: x and y in the world. */
+	double r00, r01, r02, r10, r11, r12;
+	TGroundPlane ground;
+	/** Obstacles lie between these heights above `ground` (+-inf without
+	 * ground removal). */
+	double minHeight, maxHeight;
+	double sectorsPerRadian;
+	std::uint32_t sectors;
+};
+
+/** Each point's code and horizontal range, in one loop without branches
+ * (it vectorizes; the scattering into sectors cannot). `xyz` holds n
+ * points, three floats each. */
+MRPT_EVIDENTIAL_CPU_CLONES void classify(
+	const float* xyz, std::size_t n, const TClassification& k, std::uint32_t* codes,
+	double* ranges)
+{
+	for (std::size_t i = 0; i < n; ++i)
+	{
+		const double x = xyz[3 * i], y = xyz[3 * i + 1], z = xyz[3 * i + 2];
+		const double dx0 = x - k.sensorX, dy0 = y - k.sensorY, dz0 = z - k.sensorZ;
+		// Not finite, or at the sensor (float coordinates cannot overflow
+		// the sum).
+		const double d2 = dx0 * dx0 + dy0 * dy0 + dz0 * dz0;
+		const bool dropped = !(d2 >= kNoReturnDistance * kNoReturnDistance && d2 <= DBL_MAX);
+		const double h = z - (k.ground.a * x + k.ground.b * y + k.ground.c);
+		const bool above = h > k.maxHeight, ground = !(h >= k.minHeight);
+		const double dx = k.r00 * dx0 + k.r01 * dy0 + k.r02 * dz0;
+		const double dy = k.r10 * dx0 + k.r11 * dy0 + k.r12 * dz0;
+		// No hypot: its care for overflow costs more than the rest of the loop.
+		ranges[i] = std::sqrt(dx * dx + dy * dy);
+		// Nearest sector centre; the last one wraps to the first. A point
+		// within 2e-6 rad of two sectors' border may go to either. The
+		// position is >= 0 (to fastAtan2's error): adding a half and
+		// truncating rounds it. A dropped point's NaN is never converted.
+		const double position = (detail::fastAtan2(dy, dx) + M_PI) * k.sectorsPerRadian + 0.5;
+		auto s = static_cast<std::uint32_t>(static_cast<std::int32_t>(dropped ? 0.0 : position));
+		s = s >= k.sectors ? s - k.sectors : s;
+		s = ground ? (s | kGround) : s;
+		s = above ? kAboveRobot : s;
+		codes[i] = dropped ? kDropped : s;
+	}
+}
+}  // namespace
+
 TCloudCounts sortCloudIntoSectors(
 	const std::vector<mrpt::math::TPoint3Df>& points,
 	const mrpt::math::TPoint3D& sensor, const mrpt::poses::CPose3D& robotPose,
-	const TCloudRules& rules, TCloudReturns& out)
+	const TCloudRules& rules, TCloudReturns& out, TCloudScratch& scratch)
 {
 	TCloudCounts counts;
 	const auto sectors = static_cast<std::size_t>(
 		std::max(1L, std::lround(2 * M_PI / rules.sectorWidth)));
 	out.reset(sectors);
-	const double spacing = 2 * M_PI / static_cast<double>(sectors);
-	const double perRadian = 1.0 / spacing;
 
-	TGroundPlane ground;  // the robot's base plane
+	TClassification k;
 	if (rules.groundRemoval == GroundRemoval::Plane)
 	{
 		TGroundFit fit;
 		fit.sensorZ = sensor.z;
-		if (const auto plane = fitGroundPlane(points, fit))
-			ground = *plane, counts.planeFound = true;
+		// Else the robot's base plane (k.ground's default).
+		if (const auto plane = fitGroundPlane(points, fit, scratch.columns))
+			k.ground = *plane, counts.planeFound = true;
 	}
-
+	const bool removal = rules.groundRemoval != GroundRemoval::None;
+	k.minHeight = removal ? rules.minObstacleHeight : -HUGE_VAL;
+	k.maxHeight = removal ? rules.maxObstacleHeight : HUGE_VAL;
 	const auto& R = robotPose.getRotationMatrix();
-	const double r00 = R(0, 0), r01 = R(0, 1), r02 = R(0, 2), r10 = R(1, 0), r11 = R(1, 1),
-				 r12 = R(1, 2);
-	for (const auto& p : points)
+	k.r00 = R(0, 0), k.r01 = R(0, 1), k.r02 = R(0, 2);
+	k.r10 = R(1, 0), k.r11 = R(1, 1), k.r12 = R(1, 2);
+	k.sensorX = sensor.x, k.sensorY = sensor.y, k.sensorZ = sensor.z;
+	k.sectorsPerRadian = 1.0 / (2 * M_PI / static_cast<double>(sectors));
+	k.sectors = static_cast<std::uint32_t>(sectors);
+
+	static_assert(sizeof(mrpt::math::TPoint3Df) == 3 * sizeof(float), "packed points");
+	const std::size_t n = points.size();
+	scratch.codes.resize(n);
+	scratch.ranges.resize(n);
+	classify(n ? &points[0].x : nullptr, n, k, scratch.codes.data(), scratch.ranges.data());
+
+	const bool groundIsFree = rules.groundReturns == GroundReturns::FreeSpace;
+	for (std::size_t i = 0; i < n; ++i)
 	{
-		const double dx0 = p.x - sensor.x, dy0 = p.y - sensor.y, dz0 = p.z - sensor.z;
-		if (!(std::isfinite(dx0) && std::isfinite(dy0) && std::isfinite(dz0)) ||
-			dx0 * dx0 + dy0 * dy0 + dz0 * dz0 < kNoReturnDistance * kNoReturnDistance)
-		{
+		const std::uint32_t code = scratch.codes[i];
+		const double range = scratch.ranges[i];
+		if (code == kDropped)
 			++counts.dropped;
-			continue;
-		}
-		++counts.used;
-		bool obstacle = true;
-		if (rules.groundRemoval != GroundRemoval::None)
+		else if (code == kAboveRobot)
+			++counts.aboveRobot;
+		else if (code & kGround)
 		{
-			const double h = ground.heightOf(p);
-			if (h > rules.maxObstacleHeight)
-			{
-				++counts.aboveRobot;
-				continue;
-			}
-			obstacle = h >= rules.minObstacleHeight;
+			++counts.ground;
+			double& reach = out.freeReach[code & ~kGround];
+			if (groundIsFree) reach = std::max(reach, range);
 		}
-		// Only x and y of the point in the world, from the sensor's place.
-		const double dx = r00 * (p.x - sensor.x) + r01 * (p.y - sensor.y) + r02 * (p.z - sensor.z);
-		const double dy = r10 * (p.x - sensor.x) + r11 * (p.y - sensor.y) + r12 * (p.z - sensor.z);
-		// No hypot: its care for overflow costs more than the rest of the loop.
-		const double range = std::sqrt(dx * dx + dy * dy);
-		// Nearest sector centre; the last one wraps to the first. A point
-		// within 2e-6 rad of two sectors' border may go to either. The
-		// position is >= 0 (to fastAtan2's error): adding a half and
-		// truncating rounds it, without a call to lround for each point.
-		const auto s =
-			static_cast<std::size_t>((detail::fastAtan2(dy, dx) + M_PI) * perRadian + 0.5) %
-			sectors;
-		if (obstacle)
+		else
 		{
 			++counts.obstacles;
-			out.impacts[s].push_back(range);
-			continue;
+			out.impacts[code].push_back(range);
 		}
-		++counts.ground;
-		if (rules.groundReturns == GroundReturns::FreeSpace)
-			out.freeReach[s] = std::max(out.freeReach[s], range);
 	}
+	counts.used = n - counts.dropped;
 	return counts;
+}
+
+TCloudCounts sortCloudIntoSectors(
+	const std::vector<mrpt::math::TPoint3Df>& points,
+	const mrpt::math::TPoint3D& sensor, const mrpt::poses::CPose3D& robotPose,
+	const TCloudRules& rules, TCloudReturns& out)
+{
+	TCloudScratch scratch;
+	return sortCloudIntoSectors(points, sensor, robotPose, rules, out, scratch);
 }
 
 }  // namespace mrpt_evidential

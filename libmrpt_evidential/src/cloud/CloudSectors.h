@@ -9,6 +9,7 @@
 #include <mrpt_evidential/scan/CPolarSourceGrid.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace mrpt_evidential
@@ -45,12 +46,27 @@ constexpr double kDefaultCloudSectorWidth = 0.5 * 3.14159265358979323846 / 180.0
 /** Points closer than this to the sensor are no returns, metres. */
 constexpr double kNoReturnDistance = 0.01;
 
+/** Per-point storage of sortCloudIntoSectors(), kept between clouds so that
+ * it is not allocated for each. */
+struct TCloudScratch
+{
+	std::vector<std::uint32_t> codes;
+	std::vector<double> ranges;
+	/** The ground plane's fit's (fitGroundPlane()). */
+	std::vector<int> columns;
+};
+
 /** Fills `out` with the cloud's returns: each obstacle point an impact of
  * the sector of its azimuth around the sensor, at its horizontal range; each
  * ground point (with GroundReturns::FreeSpace) a free reach of its sector.
  * `points` and `sensor` are in the robot's frame; heights are measured
  * there (rules.groundRemoval), azimuths and ranges in the world, after
- * `robotPose`. Never throws. */
+ * `robotPose`. Never throws but std::bad_alloc. */
+TCloudCounts sortCloudIntoSectors(
+	const std::vector<mrpt::math::TPoint3Df>& points,
+	const mrpt::math::TPoint3D& sensor, const mrpt::poses::CPose3D& robotPose,
+	const TCloudRules& rules, TCloudReturns& out, TCloudScratch& scratch);
+/** The same with storage of its own. */
 TCloudCounts sortCloudIntoSectors(
 	const std::vector<mrpt::math::TPoint3Df>& points,
 	const mrpt::math::TPoint3D& sensor, const mrpt::poses::CPose3D& robotPose,

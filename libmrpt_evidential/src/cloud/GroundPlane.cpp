@@ -5,6 +5,7 @@
 #include <mrpt_evidential/support/CpuClones.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <random>
 
@@ -22,6 +23,8 @@ constexpr double kColumn = 1.0, kColumnReach = 40.0;
  * chance as small (most clouds have ground in most columns). */
 constexpr int kTries = 200;
 constexpr double kMissRisk = 1e-5;
+/** Marks of columnsOf(). */
+constexpr int kNotGround = -1, kOutsideColumns = -2;
 
 /** The tries after which a plane holding `share` of the sample has been
  * drawn at least once but with a chance below kMissRisk. */
@@ -72,18 +75,24 @@ std::optional<TGroundPlane> planeThrough(
 	return plane;
 }
 
-/** Least squares of z = a x + b y + c over the inliers of `plane`; the
- * plane itself when they do not fix one. */
+/** Least squares of z = a x + b y + c over the candidates (columns[i] !=
+ * kNotGround) within inlierDistance of `plane`; the plane itself when they
+ * do not fix one. */
 TGroundPlane refine(
-	const std::vector<mrpt::math::TPoint3Df>& points, const TGroundPlane& plane,
-	double inlierDistance, std::size_t& inliers)
+	const std::vector<mrpt::math::TPoint3Df>& points, const std::vector<int>& columns,
+	const TGroundPlane& plane, double inlierDistance, std::size_t& inliers)
 {
 	double sxx = 0, sxy = 0, syy = 0, sx = 0, sy = 0, n = 0, sxz = 0, syz = 0, sz = 0;
-	for (const auto& p : points)
+	for (std::size_t i = 0; i < points.size(); ++i)
 	{
-		if (std::abs(plane.heightOf(p)) > inlierDistance) continue;
-		const double x = p.x, y = p.y, z = p.z;
-		sxx += x * x, sxy += x * y, syy += y * y, sx += x, sy += y, n += 1;
+		// Candidates come in long runs (a layer, or a laser in each firing);
+		// the inliers among them do not: they are added without a branch,
+		// adding zeros leaving the sums as they were.
+		if (columns[i] == kNotGround) continue;
+		const auto& p = points[i];
+		const bool in = std::abs(plane.heightOf(p)) <= inlierDistance;
+		const double x = in ? p.x : 0.0, y = in ? p.y : 0.0, z = in ? p.z : 0.0;
+		sxx += x * x, sxy += x * y, syy += y * y, sx += x, sy += y, n += in ? 1.0 : 0.0;
 		sxz += x * z, syz += y * z, sz += z;
 	}
 	inliers = static_cast<std::size_t>(n);
@@ -100,44 +109,63 @@ TGroundPlane refine(
 			 sxz * (sxy * sy - syy * sx)) / det;
 	return out;
 }
+
+/** Each point's column (x + side * y), kOutsideColumns for a candidate
+ * outside them, or kNotGround for a point that cannot be ground: not finite,
+ * or too high or too low for its distance. One loop without branches: it
+ * vectorizes. */
+void columnsOf(
+	const float* xyz, std::size_t n, double slope, double top, double bottom, int* columns)
+{
+	constexpr double side = 2 * kColumnReach / kColumn;
+	for (std::size_t i = 0; i < n; ++i)
+	{
+		const double x = xyz[3 * i], y = xyz[3 * i + 1], z = xyz[3 * i + 2];
+		// Not std::hypot: its care for overflow cost most of the fit.
+		const double r2 = x * x + y * y;
+		const double rise = slope * std::sqrt(r2);
+		// Finite (float coordinates cannot overflow r2), and within the
+		// heights; NaN fails every test.
+		const bool candidate = (z <= top + rise) & (z >= bottom - rise) & (r2 <= DBL_MAX);
+		const double fx = (x + kColumnReach) / kColumn, fy = (y + kColumnReach) / kColumn;
+		const bool inside = (fx >= 0) & (fy >= 0) & (fx < side) & (fy < side);
+		// The offsets being >= 0, truncation is the floor.
+		const int column = static_cast<int>(inside ? fx : 0.0) +
+			static_cast<int>(side) * static_cast<int>(inside ? fy : 0.0);
+		columns[i] = !candidate ? kNotGround : inside ? column : kOutsideColumns;
+	}
+}
 }  // namespace
 
 MRPT_EVIDENTIAL_CPU_CLONES std::optional<TGroundPlane> fitGroundPlane(
-	const std::vector<mrpt::math::TPoint3Df>& points, const TGroundFit& fit)
+	const std::vector<mrpt::math::TPoint3Df>& points, const TGroundFit& fit,
+	std::vector<int>& columns)
 {
 	// Ground can only be low: below the sensor by the mounting heights, give
 	// or take the steepest slope's rise.
-	std::vector<mrpt::math::TPoint3Df> low;
-	low.reserve(points.size());
 	const double slope = std::tan(fit.maxSlope);
 	const double top = fit.sensorZ - fit.minSensorHeight, bottom = fit.sensorZ - fit.maxSensorHeight;
-	for (const auto& p : points)
-	{
-		// Not std::hypot: its care for overflow cost most of the fit.
-		const double x = p.x, y = p.y;
-		const double rise = slope * std::sqrt(x * x + y * y);
-		if (p.z <= top + rise && p.z >= bottom - rise) low.push_back(p);
-	}
-	if (low.size() < std::max<std::size_t>(fit.minInliers, 3)) return std::nullopt;
+	static_assert(sizeof(mrpt::math::TPoint3Df) == 3 * sizeof(float), "packed points");
+	columns.resize(points.size());
+	columnsOf(points.empty() ? nullptr : &points[0].x, points.size(), slope, top, bottom, columns.data());
+	const auto candidates = static_cast<std::size_t>(
+		points.size() - std::count(columns.begin(), columns.end(), kNotGround));
+	if (candidates < std::max<std::size_t>(fit.minInliers, 3)) return std::nullopt;
 
 	constexpr auto side = static_cast<std::size_t>(2 * kColumnReach / kColumn);
 	// Each column's lowest height beside its point: no lookup through the
-	// points, and (the offsets being >= 0) truncation is the floor.
+	// points.
 	std::vector<int> lowest(side * side, -1);
 	std::vector<float> lowestZ(side * side, HUGE_VALF);
-	for (std::size_t i = 0; i < low.size(); ++i)
+	for (std::size_t i = 0; i < points.size(); ++i)
 	{
-		const double fx = (low[i].x + kColumnReach) / kColumn;
-		const double fy = (low[i].y + kColumnReach) / kColumn;
-		if (!(fx >= 0 && fy >= 0 && fx < side && fy < side)) continue;
-		const std::size_t column =
-			static_cast<std::size_t>(fx) + side * static_cast<std::size_t>(fy);
-		if (low[i].z < lowestZ[column])
-			lowestZ[column] = low[i].z, lowest[column] = static_cast<int>(i);
+		if (columns[i] < 0) continue;
+		const auto c = static_cast<std::size_t>(columns[i]);
+		if (points[i].z < lowestZ[c]) lowestZ[c] = points[i].z, lowest[c] = static_cast<int>(i);
 	}
 	TSample sample;
 	for (const int i : lowest)
-		if (i >= 0) sample.add(low[static_cast<std::size_t>(i)]);
+		if (i >= 0) sample.add(points[static_cast<std::size_t>(i)]);
 	if (sample.size() < 3) return std::nullopt;
 
 	std::minstd_rand rng(1);
@@ -156,8 +184,8 @@ MRPT_EVIDENTIAL_CPU_CLONES std::optional<TGroundPlane> fitGroundPlane(
 	}
 	if (!best) return std::nullopt;
 	std::size_t inliers = 0;
-	const TGroundPlane refined = refine(low, *best, fit.inlierDistance, inliers);
-	const double share = static_cast<double>(inliers) / static_cast<double>(low.size());
+	const TGroundPlane refined = refine(points, columns, *best, fit.inlierDistance, inliers);
+	const double share = static_cast<double>(inliers) / static_cast<double>(candidates);
 	if (inliers < fit.minInliers || share < fit.minInlierShare) return std::nullopt;
 	// The refined plane must still obey the rules; else keep RANSAC's.
 	const double tilt = std::atan(std::hypot(refined.a, refined.b));

@@ -50,8 +50,12 @@ struct TGroundFit
  * nothing when no plane meets `fit`'s rules. Of two planes with as many
  * inliers the first found wins; the ground of a lidar scan holds most of
  * its points below the sensor, so a car's roof rarely competes. `points` are in the robot's
- * frame; the search is deterministic (fixed seed). Never throws. */
+ * frame; the search is deterministic (fixed seed). Points that are not
+ * finite are never ground. `columns` is storage for one int a point, kept
+ * by the caller so that it is not allocated for each cloud. Never throws
+ * but std::bad_alloc. */
 std::optional<TGroundPlane> fitGroundPlane(
-	const std::vector<mrpt::math::TPoint3Df>& points, const TGroundFit& fit);
+	const std::vector<mrpt::math::TPoint3Df>& points, const TGroundFit& fit,
+	std::vector<int>& columns);
 
 }  // namespace mrpt_evidential

@@ -140,7 +140,8 @@ bool CEvidentialGridMap2D::insertCloud(
 	rules.groundReturns = io.groundReturns;
 	rules.sectorWidth = io.sectorWidth > 0.0 ? io.sectorWidth : kDefaultCloudSectorWidth;
 	TCloudReturns& returns = m_workspace->cloudReturns;
-	sortCloudIntoSectors(points, sensorPose->translation(), robotPose, rules, returns);
+	sortCloudIntoSectors(
+		points, sensorPose->translation(), robotPose, rules, returns, m_workspace->cloudScratch);
 
 	CPolarSourceGrid& polar = m_workspace->sourceGrid;
 	polar.build(returns, io.sourceGridOptions(getResolution()));

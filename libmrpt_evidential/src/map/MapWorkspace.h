@@ -11,6 +11,7 @@
 #include <vector>
 #include <mutex>
 
+#include "cloud/CloudSectors.h"
 #include "insert/MotionDetector.h"
 #include "map/BandWorkers.h"
 #include "insert/PolarToCartesian.h"
@@ -36,10 +37,11 @@ struct CEvidentialGridMap2D::TWorkspace
 	};
 	std::vector<TFusionBand> bands;
 	CBandWorkers bandWorkers;
-	/** A 3-D observation's points in the robot's frame, and its returns by
-	 * sector. */
+	/** A 3-D observation's points in the robot's frame, its returns by
+	 * sector, and the sorting's per-point storage. */
 	std::vector<mrpt::math::TPoint3Df> cloudPoints;
 	TCloudReturns cloudReturns;
+	TCloudScratch cloudScratch;
 	/** The likelihood field, or null until a likelihood needs it. The mutex
 	 * guards the pointer: readers of the map may race to build it. */
 	std::mutex likelihoodMutex;
