@@ -59,7 +59,9 @@ struct ZeroedAllocator
 /** A fixed number of cells, all vacuous (zero bits) when made. The memory of
  * cells never written stays untouched: a grid keeps room for growth around
  * its cells at no cost in time or resident memory until it grows into it,
- * and a copy writes only the stretches that hold a written cell. */
+ * and a copy writes only the stretches that hold a written cell. (A copy
+ * reads every stretch to find them: free where the kernel maps reads of
+ * untouched memory to a shared page of zeros, as Linux does by default.) */
 class CellBlock
 {
    public:
