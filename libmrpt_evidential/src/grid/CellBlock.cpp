@@ -3,6 +3,8 @@
 #include <mrpt_evidential/grid/CellBlock.h>
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace mrpt_evidential
 {
@@ -20,9 +22,34 @@ bool allVacuous(const QuantizedCell* first, std::size_t n)
 }
 }  // namespace
 
-CellBlock::CellBlock(const CellBlock& other) : m_cells(other.size())
+CellBlock::CellBlock(const CellBlock& other)
+	: m_cells(other.size()),
+	  m_first(other.m_first),
+	  m_rowLength(other.m_rowLength),
+	  m_stride(other.m_stride),
+	  m_rows(other.m_rows)
 {
-	copyWritten(other.data(), other.size(), 0);
+	for (std::size_t r = 0; r < m_rows; ++r)
+	{
+		const std::size_t at = m_first + r * m_stride;
+		copyWritten(other.data() + at, m_rowLength, at);
+	}
+}
+
+void CellBlock::setWritableRows(
+	std::size_t first, std::size_t rowLength, std::size_t stride, std::size_t rows)
+{
+	const bool fits = rows == 0 ||
+		(rowLength <= stride && first <= size() &&
+		 (rows - 1) * stride + rowLength <= size() - first);
+	if (!fits)
+		throw std::out_of_range(
+			"cell block: " + std::to_string(rows) + " rows of " + std::to_string(rowLength) +
+			" cells " + std::to_string(stride) + " apart from " + std::to_string(first) +
+			" leave its " + std::to_string(size()) + " cells");
+	// Rows side by side are one: a copy then tests whole pages.
+	if (rowLength == stride) rowLength *= rows, stride = rowLength, rows = rows > 0 ? 1 : 0;
+	m_first = first, m_rowLength = rowLength, m_stride = stride, m_rows = rows;
 }
 
 void CellBlock::copyWritten(const QuantizedCell* from, std::size_t count, std::size_t to)

@@ -111,6 +111,7 @@ bool EvidentialGridStorage::growToInclude(
 		grown.firstIndex = static_cast<std::size_t>(oy - addDown) * g.stride() +
 			static_cast<std::size_t>(ox - addLeft);
 		m_geometry = grown;
+		writeOnlyTheGrid();
 		return true;
 	}
 
@@ -145,8 +146,17 @@ bool EvidentialGridStorage::growToInclude(
 			grown.index(dx, cy + dy));
 	m_cells = std::move(cells);
 	m_geometry = grown;
+	writeOnlyTheGrid();
 	m_layout = newLayout();
 	return true;
+}
+
+void EvidentialGridStorage::writeOnlyTheGrid()
+{
+	const GridGeometry& g = m_geometry;
+	m_cells.setWritableRows(
+		g.firstIndex, static_cast<std::size_t>(g.sizeX), g.stride(),
+		static_cast<std::size_t>(g.sizeY));
 }
 
 std::vector<QuantizedCell> EvidentialGridStorage::packedCells() const

@@ -59,15 +59,19 @@ struct ZeroedAllocator
 /** A fixed number of cells, all vacuous (zero bits) when made. The memory of
  * cells never written stays untouched: a grid keeps room for growth around
  * its cells at no cost in time or resident memory until it grows into it,
- * and a copy writes only the stretches that hold a written cell. (A copy
- * reads every stretch to find them: free where the kernel maps reads of
- * untouched memory to a shared page of zeros, as Linux does by default.) */
+ * and a copy writes only the stretches that hold a written cell. To find
+ * them it reads the writable rows (setWritableRows()): free where the kernel
+ * maps reads of untouched memory to a shared page of zeros, as Linux does by
+ * default. */
 class CellBlock
 {
    public:
 	CellBlock() = default;
 	/** `count` vacuous cells. \throws std::bad_alloc */
-	explicit CellBlock(std::size_t count) : m_cells(count) {}
+	explicit CellBlock(std::size_t count)
+		: m_cells(count), m_rowLength(count), m_stride(count), m_rows(count > 0 ? 1 : 0)
+	{
+	}
 	/** \throws std::bad_alloc */
 	CellBlock(const CellBlock& other);
 	/** \throws std::bad_alloc */
@@ -88,8 +92,19 @@ class CellBlock
 	 * be vacuous). */
 	void copyWritten(const QuantizedCell* from, std::size_t count, std::size_t to);
 
+	/** Says where cells may be written: `rows` rows of `rowLength` cells,
+	 * `stride` apart, from index `first` on (a grid's cells in a block with
+	 * room around them); the owner writes no other cell. A copy then reads
+	 * those rows only: the room stays untouched even on a kernel that gives
+	 * each page read a page of its own. A block is made with all its cells
+	 * writable. \throws std::out_of_range if the rows leave the block. */
+	void setWritableRows(
+		std::size_t first, std::size_t rowLength, std::size_t stride, std::size_t rows);
+
    private:
 	std::vector<QuantizedCell, detail::ZeroedAllocator<QuantizedCell>> m_cells;
+	/** The writable rows (setWritableRows()). */
+	std::size_t m_first = 0, m_rowLength = 0, m_stride = 0, m_rows = 0;
 };
 
 }  // namespace mrpt_evidential

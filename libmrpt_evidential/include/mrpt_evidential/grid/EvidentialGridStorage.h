@@ -503,6 +503,9 @@ class EvidentialGridStorage
 	 * the stamp of every cell; the times of recent events stay. */
 	void rebaseStamps(double to);
 	void updateGains();
+	/** Tells the cells' block that only the grid's cells are written (the
+	 * room around them never is), after the geometry changed in it. */
+	void writeOnlyTheGrid();
 
 	GridGeometry m_geometry;
 	CellBlock m_cells;
