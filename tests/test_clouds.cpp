@@ -188,6 +188,17 @@ TEST(Clouds, BadPointsAreDroppedAndCounted)
 	EXPECT_EQ(at(map, 3.05, 0.05), Decision::Occupied);
 }
 
+TEST(Clouds, SectorsTooNarrowAreAClearError)
+{
+	const auto cloud = test::lidarCloud({0.0, {wallAhead()}});
+	CEvidentialGridMap2D map = makeMap();
+	map.insertionOptions.sectorWidth = 1e-5 * kDeg;  // 36 million sectors
+	EXPECT_THROW(map.insertObservation(*cloud, CPose3D()), std::invalid_argument);
+	EXPECT_EQ(map.countDecisions().free, 0u);
+	map.insertionOptions.sectorWidth = 0.001 * kDeg;
+	EXPECT_TRUE(map.insertObservation(*cloud, CPose3D()));
+}
+
 TEST(Clouds, EmptyCloudsInsertNothing)
 {
 	CEvidentialGridMap2D map = makeMap();

@@ -7,6 +7,8 @@
 
 #include <cfloat>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "cloud/GroundPlane.h"
 
@@ -73,9 +75,14 @@ TCloudCounts sortCloudIntoSectors(
 	const mrpt::math::TPoint3D& sensor, const mrpt::poses::CPose3D& robotPose,
 	const TCloudRules& rules, TCloudReturns& out, TCloudScratch& scratch)
 {
+	const double turn = 2 * M_PI / rules.sectorWidth;
+	if (!(turn <= static_cast<double>(kMaxCloudSectors)))
+		throw std::invalid_argument(
+			"sectorWidth " + std::to_string(rules.sectorWidth * 180 / M_PI) +
+			" degrees cuts a cloud's turn into more than " + std::to_string(kMaxCloudSectors) +
+			" sectors (0.001 degree each)");
+	const auto sectors = static_cast<std::size_t>(std::max(1L, std::lround(turn)));
 	TCloudCounts counts;
-	const auto sectors = static_cast<std::size_t>(
-		std::max(1L, std::lround(2 * M_PI / rules.sectorWidth)));
 	out.reset(sectors);
 
 	TClassification k;

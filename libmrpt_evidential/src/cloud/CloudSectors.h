@@ -46,6 +46,11 @@ constexpr double kDefaultCloudSectorWidth = 0.5 * 3.14159265358979323846 / 180.0
 /** Points closer than this to the sensor are no returns, metres. */
 constexpr double kNoReturnDistance = 0.01;
 
+/** The most sectors a cloud's turn is cut into: 0.001 degree each, finer
+ * than any lidar's azimuths (a width that asks for more is an error, not
+ * gigabytes of empty sectors). */
+constexpr std::size_t kMaxCloudSectors = 360'000;
+
 /** Per-point storage of sortCloudIntoSectors(), kept between clouds so that
  * it is not allocated for each. */
 struct TCloudScratch
@@ -61,7 +66,9 @@ struct TCloudScratch
  * ground point (with GroundReturns::FreeSpace) a free reach of its sector.
  * `points` and `sensor` are in the robot's frame; heights are measured
  * there (rules.groundRemoval), azimuths and ranges in the world, after
- * `robotPose`. Never throws but std::bad_alloc. */
+ * `robotPose`.
+ * \throws std::invalid_argument if rules.sectorWidth cuts the turn into more
+ * than kMaxCloudSectors sectors; std::bad_alloc. */
 TCloudCounts sortCloudIntoSectors(
 	const std::vector<mrpt::math::TPoint3Df>& points,
 	const mrpt::math::TPoint3D& sensor, const mrpt::poses::CPose3D& robotPose,
