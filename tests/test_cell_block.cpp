@@ -126,7 +126,7 @@ TEST(CellBlock, CellsNeverWrittenTakeNoResidentMemory)
 		s.write(g.index(cx, g.sizeY / 2), Mass::simpleOccupied(0.7));
 	const EvidentialGridStorage copy = s;
 	const std::size_t grew = residentBytes() - before;
-	EXPECT_LT(grew, std::size_t{zeroPage ? 8 : 40} << 20)
+	EXPECT_LT(grew, std::size_t{zeroPage ? 8u : 40u} << 20)
 		<< "blocks of " << 8 * s.cells().size() / (1 << 20) << " MB, "
 		<< (zeroPage ? "reads of untouched memory free" : "every page read a page");
 	g.forEachIndex([&](std::size_t i) { ASSERT_EQ(copy.cells()[i], s.cells()[i]) << i; });

@@ -264,13 +264,21 @@ void build(const TBuildOptions& options, SteadyClock::time_point start)
 		 [&inserter](const auto& cloud, const auto& pose) { inserter.insert(cloud, pose); }});
 	progress.finish();
 	if (inserter.inserted() == 0)
+	{
+		// An input without any observation the map reads is told apart from
+		// one whose scans all lacked a pose or were refused.
+		const bool nothingToRead = inserter.scans().total == 0 && inserter.clouds().total == 0;
 		throw std::runtime_error(
 			options.source.input + ": no scan was inserted (" +
-			scanAccount(inserter.scans()) +
+			(nothingToRead ? "the input holds no 2-D scan and no 3-D cloud the map reads: "
+							 "CObservation2DRangeScan, CObservationPointCloud, "
+							 "CObservationVelodyneScan, CObservation3DRangeScan"
+						   : scanAccount(inserter.scans())) +
 			(inserter.clouds().total > 0
 				 ? "; " + scanAccount(inserter.clouds(), "3-D clouds")
 				 : std::string()) +
 			notInsertedAccount(input.counts()) + ")");
+	}
 	growth.finish();
 
 	TBuildRecord run;

@@ -64,6 +64,11 @@ expect_failure "$T/missing.rawlog: cannot open: No such file or directory" -i "$
 expect_failure "$T: is a directory" -i "$T"
 expect_failure "$out/map.evgrid: entry 0 is a mrpt_evidential::CEvidentialGridMap2D, which has no place in a rawlog" \
   -i "$out/map.evgrid"
+# A rawlog of observations the map does not read (MRPT's landmark demo):
+# the message says what it reads and counts what it found.
+expect_failure "$DATASETS/kf-slam_demo.rawlog: no scan was inserted (the input holds no 2-D scan and no 3-D cloud the map reads: CObservation2DRangeScan, CObservationPointCloud, CObservationVelodyneScan, CObservation3DRangeScan; not inserted: " \
+  -i "$DATASETS/kf-slam_demo.rawlog"
+contains "$ERR" " mrpt::obs::CObservationBearingRange)"
 
 # Config files: missing, without an evidential grid, with a bad value, or a
 # section that is not there.
