@@ -77,10 +77,10 @@ std::optional<int> parseOptions(
 	int argc, char** argv, int first, TBuildOptions& options)
 {
 	TCLAP::CmdLine cmd(
-		"Builds an evidential grid map from a rawlog (action/sensory-frame or "
-		"observation-only format, plain or .gz) or a simplemap: its 2-D scans "
-		"(CObservation2DRangeScan) and 3-D clouds (CObservationPointCloud, "
-		"CObservationVelodyneScan, CObservation3DRangeScan; other observations "
+		std::string("Builds an evidential grid map from a rawlog (action/sensory-frame or "
+					"observation-only format, plain or .gz) or a simplemap: its 2-D scans (") +
+			kScanClassName + ") and 3-D clouds (" + kCloudClassNames +
+			"; other observations "
 		"are counted, not inserted). It writes "
 		"into the output folder: map.evgrid (the serialized map), "
 		"map.3Dscene (the map and the path, for SceneViewer3D), the pictures "
@@ -270,9 +270,9 @@ void build(const TBuildOptions& options, SteadyClock::time_point start)
 		const bool nothingToRead = inserter.scans().total == 0 && inserter.clouds().total == 0;
 		throw std::runtime_error(
 			options.source.input + ": no scan was inserted (" +
-			(nothingToRead ? "the input holds no 2-D scan and no 3-D cloud the map reads: "
-							 "CObservation2DRangeScan, CObservationPointCloud, "
-							 "CObservationVelodyneScan, CObservation3DRangeScan"
+			(nothingToRead ? std::string("the input holds no 2-D scan and no 3-D cloud the map "
+										 "reads: ") +
+					 kScanClassName + ", " + kCloudClassNames
 						   : scanAccount(inserter.scans())) +
 			(inserter.clouds().total > 0
 				 ? "; " + scanAccount(inserter.clouds(), "3-D clouds")

@@ -48,6 +48,12 @@ struct TInputCounts
  * input held instead. */
 std::string notInsertedAccount(const TInputCounts& counts);
 
+/** The names of the observation classes build reads, for its help and its
+ * messages: 2-D scans, and the 3-D observations isCloud() takes. */
+inline constexpr char kScanClassName[] = "CObservation2DRangeScan";
+inline constexpr char kCloudClassNames[] =
+	"CObservationPointCloud, CObservationVelodyneScan, CObservation3DRangeScan";
+
 /** The observation types the map reads as 3-D clouds:
  * CObservationPointCloud, CObservationVelodyneScan, CObservation3DRangeScan
  * (CObservationRotatingScan has no elevations in MRPT 2.5.8). */
