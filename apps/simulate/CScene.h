@@ -19,8 +19,13 @@ class CScene
 {
    public:
 	/** The simulated world's cell size: finer than any map built from it,
-	 * so that the map's cells are not the world's. */
-	static constexpr double kWorldResolution = 0.02;
+	 * so that the map's cells are not the world's, and a divisor of 0.05 m,
+	 * so that a shape's sides, placed on multiples of 0.05 m, fall on the
+	 * world's cell borders and the world drawn is the shape itself. (With
+	 * 0.02 m cells, every other side fell on cell centres and was drawn a
+	 * centimetre out: beams ended in the cell beyond a face that the motion
+	 * truth, made from the shapes, says the thing does not cover.) */
+	static constexpr double kWorldResolution = 0.01;
 
 	virtual ~CScene() = default;
 
