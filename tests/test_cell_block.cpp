@@ -139,3 +139,29 @@ TEST(CellBlock, CellsNeverWrittenTakeNoResidentMemory)
 	EXPECT_GT(again.read(again.geometry().index(again.geometry().sizeX - 1, 0)).occupied, 0.5);
 #endif
 }
+
+TEST(CellBlock, ACopyMapsOnlyThePagesItWrites)
+{
+#ifdef EV_SANITIZED
+	GTEST_SKIP() << "a sanitizer's allocator and shadow memory change what is resident";
+#else
+	if (residentBytes() == 0) GTEST_SKIP() << "no /proc/self/statm here";
+	// A 64 MB block whose writable cells are 3 MB from an unaligned cell, with
+	// a written run of 1 MB in their middle: a copy asks the system for the
+	// pages of that run in one call, and for no others.
+	constexpr std::size_t kMB = (1 << 20) / sizeof(QuantizedCell);
+	CellBlock block(64 * kMB);
+	const std::size_t first = 20 * kMB + 3, run = kMB + 5;
+	block.setWritableRows(first, 3 * kMB, 3 * kMB, 1);
+	for (std::size_t i = 0; i < run; ++i) block[first + kMB + i] = someCell(i % 1000 + 1);
+	const std::size_t before = residentBytes();
+	const CellBlock copy(block);
+	const std::size_t grew = residentBytes() - before;
+	// The run's pages, and at most the writable cells read around it.
+	EXPECT_LT(grew, std::size_t{5} << 20);
+	EXPECT_EQ(copy[first + kMB - 1], QuantizedCell{});
+	EXPECT_EQ(copy[first + kMB + run], QuantizedCell{});
+	for (std::size_t i = 0; i < run; i += 997) ASSERT_EQ(copy[first + kMB + i], block[first + kMB + i]) << i;
+	EXPECT_EQ(copy[first + kMB + run - 1], block[first + kMB + run - 1]);
+#endif
+}

@@ -1,6 +1,7 @@
 /* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT. */
 
 #include <mrpt_evidential/grid/CellBlock.h>
+#include <mrpt_evidential/support/MemoryPages.h>
 
 #include <algorithm>
 #include <stdexcept>
@@ -54,11 +55,22 @@ void CellBlock::setWritableRows(
 
 void CellBlock::copyWritten(const QuantizedCell* from, std::size_t count, std::size_t to)
 {
+	// Runs of stretches that hold a written cell, each copied in one go.
+	std::size_t runStart = 0;
+	const auto copyRun = [&](std::size_t runEnd) {
+		if (runEnd == runStart) return;
+		detail::mapPagesForWriting(
+			data() + to + runStart, (runEnd - runStart) * sizeof(QuantizedCell));
+		std::copy_n(from + runStart, runEnd - runStart, data() + to + runStart);
+	};
 	for (std::size_t at = 0; at < count; at += kStretch)
 	{
 		const std::size_t n = std::min(kStretch, count - at);
-		if (!allVacuous(from + at, n)) std::copy_n(from + at, n, data() + to + at);
+		if (!allVacuous(from + at, n)) continue;
+		copyRun(at);
+		runStart = at + n;
 	}
+	copyRun(count);
 }
 
 CellBlock& CellBlock::operator=(const CellBlock& other)
