@@ -54,9 +54,8 @@ inline constexpr char kScanClassName[] = "CObservation2DRangeScan";
 inline constexpr char kCloudClassNames[] =
 	"CObservationPointCloud, CObservationVelodyneScan, CObservation3DRangeScan";
 
-/** The observation types the map reads as 3-D clouds:
- * CObservationPointCloud, CObservationVelodyneScan, CObservation3DRangeScan
- * (CObservationRotatingScan has no elevations in MRPT 2.5.8). */
+/** Whether the map reads `obs` as a 3-D cloud: the classes kCloudClassNames
+ * names (CObservationRotatingScan has no elevations in MRPT 2.5.8). */
 bool isCloud(const mrpt::obs::CObservation& obs);
 
 /** Walks the entries of a rawlog (action/sensory-frame pairs, single
