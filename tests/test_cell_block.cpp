@@ -3,6 +3,7 @@
  * memory, in the grid or in its copies. */
 #include <mrpt_evidential/grid/CellBlock.h>
 #include <mrpt_evidential/grid/EvidentialGridStorage.h>
+#include <mrpt_evidential/support/MemoryPages.h>
 
 #include <sys/mman.h>
 
@@ -102,20 +103,78 @@ TEST(CellBlock, CopiesOnlyTheWritableRows)
 	EXPECT_NO_THROW(block.setWritableRows(0, 24, 24, 1));
 }
 
+TEST(CellBlock, RowsCopiedBetweenBlocksKeepEveryWrittenCell)
+{
+	// 8 MB, most pages never touched: 150 rows of 3000 cells, 5000 apart,
+	// with cells written at the rows' ends, on both sides of page borders
+	// and a few in between; copied to a larger block with rows 7000 apart.
+	CellBlock block(1'000'000);
+	const std::size_t first = 1234, length = 3000, stride = 5000, rows = 150;
+	block.setWritableRows(first, length, stride, rows);
+	const auto rowStart = [&](std::size_t r) { return first + r * stride; };
+	const std::size_t page = 4096 / sizeof(QuantizedCell);
+	for (std::size_t r = 0; r < rows; r += 7)
+	{
+		block[rowStart(r)] = someCell(r + 1);
+		block[rowStart(r) + length - 1] = someCell(r + 2);
+	}
+	for (std::size_t border = page; border < block.size(); border += 37 * page)
+		for (const std::size_t i : {border - 1, border})
+			if (const std::size_t off = i - first; i >= first && off % stride < length &&
+				off / stride < rows)
+				block[i] = someCell(i);
+	const CellBlock copy(block);
+	EXPECT_TRUE(copy == block);
+	CellBlock larger(1'200'000);
+	larger.copyWrittenRows(block, first, stride, 999, 7000, length, rows);
+	for (std::size_t r = 0; r < rows; ++r)
+		for (std::size_t c = 0; c < length; ++c)
+			ASSERT_EQ(larger[999 + r * 7000 + c], block[rowStart(r) + c]) << r << ", " << c;
+	std::size_t written = 0;
+	for (std::size_t i = 0; i < larger.size(); ++i) written += !(larger[i] == QuantizedCell{});
+	std::size_t expected = 0;
+	for (std::size_t i = 0; i < block.size(); ++i) expected += !(block[i] == QuantizedCell{});
+	EXPECT_EQ(written, expected) << "nothing but the rows' cells written";
+	EXPECT_THROW(larger.copyWrittenRows(block, first, stride, 999, 7000, length, 200),
+				 std::out_of_range);
+}
+
+TEST(CellBlock, UntouchedPagesAreThoseNeverWrittenOrRead)
+{
+	const detail::CUntouchedPages pages;
+	if (!pages.known()) GTEST_SKIP() << "this system does not say which pages were touched";
+	const std::size_t page = detail::CUntouchedPages::pageSize();
+	void* p = mmap(nullptr, 64 * page, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+	ASSERT_NE(p, MAP_FAILED);
+	auto* bytes = static_cast<volatile char*>(p);
+	bytes[3 * page + 17] = 1;  // written
+	const char read = bytes[20 * page];  // read: a page of zeros is mapped
+	EXPECT_EQ(read, 0);
+	std::vector<std::uint8_t> untouched;
+	// From byte 100 of page 0 to byte 4 of page 40: 41 pages.
+	ASSERT_TRUE(pages.find(static_cast<char*>(p) + 100, 40 * page - 95, untouched));
+	ASSERT_EQ(untouched.size(), 41u);
+	for (std::size_t i = 0; i < untouched.size(); ++i)
+		EXPECT_EQ(untouched[i], i == 3 || i == 20 ? 0 : 1) << "page " << i;
+	munmap(p, 64 * page);
+}
+
 TEST(CellBlock, CellsNeverWrittenTakeNoResidentMemory)
 {
 #ifdef EV_SANITIZED
 	GTEST_SKIP() << "a sanitizer's allocator and shadow memory change what is resident";
 #else
 	if (residentBytes() == 0) GTEST_SKIP() << "no /proc/self/statm here";
-	const bool zeroPage = readsOfUntouchedMemoryTakeNone();
+	// Copies leave the pages never touched unread where the system says
+	// which they are: then nothing is read that was not written.
+	const bool zeroPage = readsOfUntouchedMemoryTakeNone() || detail::CUntouchedPages().known();
 	const std::size_t before = residentBytes();
 	// A grid of 19 MB (50 x 120 m at 0.05 m) grown to 27 MB, into a block of
 	// 134 MB with room beyond its east side; a few cells written. The room
 	// stays untouched, in the grid (made, moved into the new block) and in
 	// its copy, which reads the grid's rows only; so do the grid's cells
-	// never written, where reading them costs nothing (elsewhere the copy's
-	// reads of the grid's 27 MB make them resident).
+	// never written, where the copy knows them unread or reading them costs
+	// nothing (elsewhere its reads of the grid's 27 MB make them resident).
 	EvidentialGridStorage s;
 	s.reset(0.0, 50.0, -60.0, 60.0, 0.05, 100'000'000);
 	ASSERT_TRUE(s.growToInclude(0.0, 70.0, -60.0, 60.0, 0.0, 100'000'000));

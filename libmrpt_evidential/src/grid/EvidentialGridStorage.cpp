@@ -140,10 +140,9 @@ bool EvidentialGridStorage::growToInclude(
 	// New cells are vacuous: their stamp does not matter, vacuous never decays.
 	CellBlock cells(width * height);
 	const int dx = static_cast<int>(addLeft), dy = static_cast<int>(addDown);
-	for (int cy = 0; cy < g.sizeY; ++cy)
-		cells.copyWritten(
-			m_cells.data() + g.index(0, cy), static_cast<std::size_t>(g.sizeX),
-			grown.index(dx, cy + dy));
+	cells.copyWrittenRows(
+		m_cells, g.index(0, 0), g.stride(), grown.index(dx, dy), grown.stride(),
+		static_cast<std::size_t>(g.sizeX), static_cast<std::size_t>(g.sizeY));
 	m_cells = std::move(cells);
 	m_geometry = grown;
 	writeOnlyTheGrid();

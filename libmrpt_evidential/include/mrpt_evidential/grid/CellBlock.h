@@ -92,6 +92,17 @@ class CellBlock
 	 * be vacuous). */
 	void copyWritten(const QuantizedCell* from, std::size_t count, std::size_t to);
 
+	/** copyWritten() of `rows` rows of `rowLength` cells of `source`, from
+	 * cell `from` on, `fromStride` apart, to cell `to` on in this block,
+	 * `toStride` apart (a grid's cells moved to a larger block). Where the
+	 * system says which pages of `source` were never touched, their cells
+	 * are known vacuous without reading them: on a kernel that gives each
+	 * page read a page of its own, reading them was most of a growth's time.
+	 * 	hrows std::out_of_range if the rows leave either block. */
+	void copyWrittenRows(
+		const CellBlock& source, std::size_t from, std::size_t fromStride, std::size_t to,
+		std::size_t toStride, std::size_t rowLength, std::size_t rows);
+
 	/** Says where cells may be written: `rows` rows of `rowLength` cells,
 	 * `stride` apart, from index `first` on (a grid's cells in a block with
 	 * room around them); the owner writes no other cell. A copy then reads
