@@ -28,8 +28,9 @@ void mapPagesForWriting(void* first, std::size_t bytes) noexcept;
 class CUntouchedPages
 {
    public:
-	/** Opens this process's page map; known() is false where there is none.
-	 * Never throws. */
+	/** Opens this process's page map; known() is false where there is none,
+	 * or where it calls the page of the caller's stack untouched (a map that
+	 * does not tell). Never throws. */
 	CUntouchedPages() noexcept;
 	~CUntouchedPages();
 	CUntouchedPages(const CUntouchedPages&) = delete;
