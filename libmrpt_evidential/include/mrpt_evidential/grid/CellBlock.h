@@ -60,9 +60,10 @@ struct ZeroedAllocator
  * cells never written stays untouched: a grid keeps room for growth around
  * its cells at no cost in time or resident memory until it grows into it,
  * and a copy writes only the stretches that hold a written cell. To find
- * them it reads the writable rows (setWritableRows()): free where the kernel
- * maps reads of untouched memory to a shared page of zeros, as Linux does by
- * default. */
+ * them it reads the writable rows (setWritableRows()), less the pages the
+ * system says were never touched (copyWrittenRows()); where it cannot say,
+ * reading them is free where the kernel maps reads of untouched memory to a
+ * shared page of zeros, as Linux does by default. */
 class CellBlock
 {
    public:
@@ -98,7 +99,7 @@ class CellBlock
 	 * system says which pages of `source` were never touched, their cells
 	 * are known vacuous without reading them: on a kernel that gives each
 	 * page read a page of its own, reading them was most of a growth's time.
-	 * 	hrows std::out_of_range if the rows leave either block. */
+	 * \throws std::out_of_range if the rows leave either block. */
 	void copyWrittenRows(
 		const CellBlock& source, std::size_t from, std::size_t fromStride, std::size_t to,
 		std::size_t toStride, std::size_t rowLength, std::size_t rows);
