@@ -167,7 +167,8 @@ TEST(CellBlock, CellsNeverWrittenTakeNoResidentMemory)
 	if (residentBytes() == 0) GTEST_SKIP() << "no /proc/self/statm here";
 	// Copies leave the pages never touched unread where the system says
 	// which they are: then nothing is read that was not written.
-	const bool zeroPage = readsOfUntouchedMemoryTakeNone() || detail::CUntouchedPages().known();
+	const bool untouchedStayFree =
+		readsOfUntouchedMemoryTakeNone() || detail::CUntouchedPages().known();
 	const std::size_t before = residentBytes();
 	// A grid of 19 MB (50 x 120 m at 0.05 m) grown to 27 MB, into a block of
 	// 134 MB with room beyond its east side; a few cells written. The room
@@ -185,9 +186,10 @@ TEST(CellBlock, CellsNeverWrittenTakeNoResidentMemory)
 		s.write(g.index(cx, g.sizeY / 2), Mass::simpleOccupied(0.7));
 	const EvidentialGridStorage copy = s;
 	const std::size_t grew = residentBytes() - before;
-	EXPECT_LT(grew, std::size_t{zeroPage ? 8u : 40u} << 20)
+	EXPECT_LT(grew, std::size_t{untouchedStayFree ? 8u : 40u} << 20)
 		<< "blocks of " << 8 * s.cells().size() / (1 << 20) << " MB, "
-		<< (zeroPage ? "reads of untouched memory free" : "every page read a page");
+		<< (untouchedStayFree ? "untouched memory left unread or read for free"
+							  : "every page read a page");
 	g.forEachIndex([&](std::size_t i) { ASSERT_EQ(copy.cells()[i], s.cells()[i]) << i; });
 	// Growing again within the room moves nothing, and the copy follows.
 	ASSERT_TRUE(s.growToInclude(0.0, 90.0, -60.0, 60.0, 0.0, 100'000'000));

@@ -90,7 +90,8 @@ class CellBlock
 	/** Copies the `count` cells from `from` on to `to` on in this block,
 	 * leaving out the stretches of vacuous cells: the memory of a block's
 	 * cells that were never written stays untouched (the cells at `to` must
-	 * be vacuous). */
+	 * be vacuous). Every stretch of `from` is read: memory that is not a
+	 * block's may be a file's, whose pages never touched are no zeros. */
 	void copyWritten(const QuantizedCell* from, std::size_t count, std::size_t to);
 
 	/** copyWritten() of `rows` rows of `rowLength` cells of `source`, from
