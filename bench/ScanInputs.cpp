@@ -4,8 +4,10 @@
 
 #include <mrpt/core/Clock.h>
 #include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CRawlog.h>
 #include <mrpt/obs/stock_observations.h>
+#include <mrpt/poses/CPose2D.h>
 #include <mrpt/serialization/CArchive.h>
 
 #include <algorithm>
@@ -59,7 +61,14 @@ const std::vector<CObservation2DRangeScan>& scans(ScanKind kind)
 		}));
 	}
 	else
-	{
+		for (const TRunStep& step : senaRun()) out.push_back(step.scan);
+	return out;
+}
+
+const std::vector<TRunStep>& senaRun()
+{
+	static const std::vector<TRunStep> run = [] {
+		std::vector<TRunStep> out;
 		mrpt::io::CFileGZInputStream file(
 			std::string(MRPT_DATASETS_DIR) +
 			"/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog");
@@ -68,15 +77,21 @@ const std::vector<CObservation2DRangeScan>& scans(ScanKind kind)
 		mrpt::obs::CSensoryFrame::Ptr frame;
 		mrpt::obs::CObservation::Ptr obs;
 		std::size_t entry = 0;
+		mrpt::poses::CPose2D odometry;
 		while (mrpt::obs::CRawlog::getActionObservationPairOrObservation(
 			archive, actions, frame, obs, entry))
+		{
+			if (actions)
+				if (const auto move = actions->getBestMovementEstimation())
+					odometry = odometry + move->poseChange->getMeanVal();
 			if (frame)
 				for (const auto& o : *frame)
-					if (auto scan =
-							std::dynamic_pointer_cast<CObservation2DRangeScan>(o))
-						out.push_back(*scan);
-	}
-	return out;
+					if (auto scan = std::dynamic_pointer_cast<CObservation2DRangeScan>(o))
+						out.push_back({*scan, CPose3D(odometry)});
+		}
+		return out;
+	}();
+	return run;
 }
 
 double maxRangeOf(ScanKind kind) { return kind == ScanKind::Wide ? 30.0 : 15.0; }

@@ -60,6 +60,16 @@ struct OurOptions
 std::unique_ptr<mrpt_evidential::CEvidentialGridMap2D> ourMap(
 	ScanKind kind, double resolution, const OurOptions& o, double halfSize = 0);
 
+/** One scan of a run and the robot's pose when it was taken. */
+struct TRunStep
+{
+	mrpt::obs::CObservation2DRangeScan scan;
+	mrpt::poses::CPose3D pose;
+};
+/** SENA's scans along the robot's path as its odometry has it: a whole run,
+ * as a user builds a map of it. */
+const std::vector<TRunStep>& senaRun();
+
 /** "stock/0.05m": a case's kind and resolution in its name. */
 std::string label(ScanKind kind, double resolution);
 }  // namespace bench

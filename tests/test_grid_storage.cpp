@@ -140,6 +140,27 @@ TEST(GridStorage, GrowthRoomStaysWithinTheBudget)
 	EXPECT_EQ(s.cells().size(), 140u);
 }
 
+TEST(GridStorage, APathThatTurnsBackFindsRoom)
+{
+	// Outgrown eastwards, the block keeps room beyond the other sides too: a
+	// run that turns back west (or north, or south) grows into it without
+	// a copy of its cells, each of which writes fresh memory.
+	EvidentialGridStorage s;
+	s.reset(0.0, 10.0, 0.0, 10.0, 0.1, 100'000'000);
+	ASSERT_TRUE(s.growToInclude(0.0, 20.0, 0.0, 10.0, 0.0, 100'000'000));
+	const std::size_t layout = s.layout();
+	ASSERT_TRUE(s.growToInclude(-15.0, 20.0, 0.0, 10.0, 0.0, 100'000'000));
+	ASSERT_TRUE(s.growToInclude(-15.0, 20.0, -4.0, 14.0, 0.0, 100'000'000));
+	EXPECT_EQ(s.layout(), layout) << "grown into the room kept beyond the other sides";
+	// Near the budget the other sides' room goes first: the growing side
+	// keeps as much as before.
+	EvidentialGridStorage tight;
+	tight.reset(0.0, 10.0, 0.0, 10.0, 0.1, 100'000);
+	ASSERT_TRUE(tight.growToInclude(0.0, 20.0, 0.0, 10.0, 0.0, 100'000));
+	EXPECT_EQ(tight.geometry().firstIndex, 0u) << "no room west";
+	EXPECT_EQ(tight.cells().size(), 100'000u) << "room east up to the budget";
+}
+
 TEST(GridStorage, PackedNumbersNameTheCellsOfAGrownGrid)
 {
 	EvidentialGridStorage s;

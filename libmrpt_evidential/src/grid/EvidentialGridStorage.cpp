@@ -31,6 +31,10 @@ constexpr std::size_t kMaxKeptEventTimes = EvidentialGridStorage::kMaxStamps / 2
  * the cell budget the share is halved down to the least, then the block
  * gets no room. */
 constexpr double kGrowthRoom = 4.0, kLeastGrowthRoom = 1.0 / 16;
+/** Room beyond the sides that do not grow, as a share of the growing sides'
+ * room: a path that turns finds room without a copy of the grid (each copy
+ * writes the grid's cells into fresh memory). */
+constexpr double kAsideRoom = 0.25;
 
 /** A layout number no grid has had. */
 std::size_t newLayout()
@@ -116,22 +120,25 @@ bool EvidentialGridStorage::growToInclude(
 	}
 
 	// A new block, with room beyond each side that grows for up to four
-	// times the grid's extent: a grid that keeps growing one way is
-	// copied a few times in all, not every few metres. The room stays
-	// within the budget of cells: near it, the room is halved until the
-	// block fits.
+	// times the grid's extent, and a quarter of that beyond the others (a
+	// path that turns back): a grid that keeps growing is copied a few times
+	// in all, not every few metres. The room stays within the budget of
+	// cells: near it, the other sides' room goes first, then the room is
+	// halved until the block fits.
 	double roomLeft = 0, roomRight = 0, roomDown = 0, roomUp = 0;
-	for (double share = kGrowthRoom; share >= kLeastGrowthRoom; share /= 2)
-	{
+	const auto fits = [&](double share, double asideShare) {
 		const double spareX = std::floor(share * sx), spareY = std::floor(share * sy);
-		roomLeft = growLeft ? spareX : 0, roomRight = growRight ? spareX : 0;
-		roomDown = growDown ? spareY : 0, roomUp = growUp ? spareY : 0;
+		const double asideX = std::floor(asideShare * sx), asideY = std::floor(asideShare * sy);
+		roomLeft = growLeft ? spareX : asideX, roomRight = growRight ? spareX : asideX;
+		roomDown = growDown ? spareY : asideY, roomUp = growUp ? spareY : asideY;
 		const double width = sx + roomLeft + roomRight, height = sy + roomDown + roomUp;
-		if (width * height <= static_cast<double>(maxCells) &&
-			width <= std::numeric_limits<int>::max())
-			break;
-		roomLeft = roomRight = roomDown = roomUp = 0;
-	}
+		return width * height <= static_cast<double>(maxCells) &&
+			width <= std::numeric_limits<int>::max();
+	};
+	bool roomFits = false;
+	for (double share = kGrowthRoom; !roomFits && share >= kLeastGrowthRoom; share /= 2)
+		roomFits = fits(share, share * kAsideRoom) || fits(share, 0.0);
+	if (!roomFits) roomLeft = roomRight = roomDown = roomUp = 0;
 	const auto width = static_cast<std::size_t>(sx + roomLeft + roomRight);
 	const auto height = static_cast<std::size_t>(sy + roomDown + roomUp);
 	grown.rowStride = width;
