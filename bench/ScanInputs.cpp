@@ -82,7 +82,7 @@ const std::vector<TRunStep>& senaRun()
 			archive, actions, frame, obs, entry))
 		{
 			if (actions)
-				if (const auto move = actions->getBestMovementEstimation())
+				if (const auto move = actions->getBestMovementEstimation(); move && move->poseChange)
 					odometry = odometry + move->poseChange->getMeanVal();
 			if (frame)
 				for (const auto& o : *frame)
