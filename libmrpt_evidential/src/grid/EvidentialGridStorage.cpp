@@ -34,7 +34,7 @@ constexpr double kGrowthRoom = 4.0, kLeastGrowthRoom = 1.0 / 16;
 /** Room beyond the sides that do not grow, as a share of the growing sides'
  * room: a path that turns finds room without a copy of the grid (each copy
  * writes the grid's cells into fresh memory). */
-constexpr double kAsideRoom = 0.25;
+constexpr double kAsideRoom = 0.5;
 
 /** A layout number no grid has had. */
 std::size_t newLayout()
@@ -120,11 +120,11 @@ bool EvidentialGridStorage::growToInclude(
 	}
 
 	// A new block, with room beyond each side that grows for up to four
-	// times the grid's extent, and a quarter of that beyond the others (a
-	// path that turns back): a grid that keeps growing is copied a few times
-	// in all, not every few metres. The room stays within the budget of
-	// cells: near it, the other sides' room goes first, then the room is
-	// halved until the block fits.
+	// times the grid's extent, and half of that beyond the others (a path
+	// that turns back): a grid that keeps growing is copied a few times in
+	// all, not every few metres. The room stays within the budget of cells:
+	// near it, the other sides' room is halved first, down to none, then the
+	// growing sides' room, until the block fits.
 	double roomLeft = 0, roomRight = 0, roomDown = 0, roomUp = 0;
 	const auto fits = [&](double share, double asideShare) {
 		const double spareX = std::floor(share * sx), spareY = std::floor(share * sy);
@@ -137,7 +137,12 @@ bool EvidentialGridStorage::growToInclude(
 	};
 	bool roomFits = false;
 	for (double share = kGrowthRoom; !roomFits && share >= kLeastGrowthRoom; share /= 2)
-		roomFits = fits(share, share * kAsideRoom) || fits(share, 0.0);
+	{
+		for (double aside = share * kAsideRoom; !roomFits && aside >= share * kLeastGrowthRoom;
+			 aside /= 2)
+			roomFits = fits(share, aside);
+		roomFits = roomFits || fits(share, 0.0);
+	}
 	if (!roomFits) roomLeft = roomRight = roomDown = roomUp = 0;
 	const auto width = static_cast<std::size_t>(sx + roomLeft + roomRight);
 	const auto height = static_cast<std::size_t>(sy + roomDown + roomUp);
