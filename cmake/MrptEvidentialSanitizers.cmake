@@ -6,7 +6,7 @@ set(MRPT_EVIDENTIAL_SANITIZE "" CACHE STRING
 option(MRPT_EVIDENTIAL_BUILD_FUZZERS "Build the libFuzzer targets (clang only)" OFF)
 option(MRPT_EVIDENTIAL_RELIABILITY_TESTS
   "Add the tests that build and run the sanitizer and fuzzing trees (normal builds only)" ON)
-set(MRPT_EVIDENTIAL_FUZZ_SECONDS 60 CACHE STRING
+set(MRPT_EVIDENTIAL_FUZZ_SECONDS 30 CACHE STRING
   "How long each fuzzer runs in its CTest test")
 
 if(MRPT_EVIDENTIAL_SANITIZE)

@@ -36,7 +36,9 @@ endfunction()
 # mrpt_evidential_add_suite(NAME SOURCES a.cpp... LIBRARIES lib... [TEST_PREFIX p])
 # One GoogleTest executable, its tests discovered into CTest with label
 # "unit" (their names prefixed with p, if given) and run under the memory
-# budget.
+# budget. The target unit_suites builds them all (the sanitizer tree builds
+# nothing else of the tests).
+add_custom_target(unit_suites)
 function(mrpt_evidential_add_suite name)
   cmake_parse_arguments(arg "" "TEST_PREFIX" "SOURCES;LIBRARIES" ${ARGN})
   add_executable(${name} ${arg_SOURCES})
@@ -54,6 +56,7 @@ function(mrpt_evidential_add_suite name)
     set_target_properties(${name} PROPERTIES CROSSCOMPILING_EMULATOR "${launcher}")
   endif()
   add_dependencies(${name} memory_budget)
+  add_dependencies(unit_suites ${name})
   # TEST_PREFIX only when given: CMake 3.31 (Debian 13) warns of an empty one.
   set(prefix)
   if(arg_TEST_PREFIX)
