@@ -59,8 +59,11 @@ install_dependencies() {
 }
 
 build() {
-  local launcher=()
-  if command -v ccache >/dev/null; then
+  # Through ccache where its cache can be written: a compilation fails
+  # when it cannot.
+  local launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=) cache
+  if command -v ccache >/dev/null && cache=$(ccache -k cache_dir) &&
+    mkdir -p "$cache" 2>/dev/null && [ -w "$cache" ]; then
     launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
   fi
   cmake -S "$here" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}"
