@@ -1,6 +1,7 @@
 /* The motion layer's decisions on hand-made fusions (src/insert/): arrivals
  * beside static structure (the inside of a wall included) wait for a hit at
- * the next insertions and stay when hit again, a thing that arrived long ago
+ * the next insertions, beside a thing seen arriving in the open, and stay
+ * when hit again, a thing that arrived long ago
  * is no structure, a cell that flips between hit and free does not become
  * an arrival (then or later), nor does a hit beside cells never seen free at
  * once, a departure waits until the cell no longer leans occupied and is
@@ -66,10 +67,14 @@ class DetectorOnAGrid : public ::testing::Test
 	 * wall covers in part), but conflict enough for an event. */
 	void weakHit() { fuse(floor, Mass::simpleOccupied(0.55), true); }
 	void freeSight() { fuse(floor, Mass::simpleFree(0.7), false); }
+	/** A beam's end on a thing's face in the open, four cells from the floor
+	 * cell (within thingCells) and six from the wall: the part of a thing
+	 * that moves which reaches out of the wall's clearance. */
+	void thingInTheOpen() { fuse(grid.geometry().index(10, 6), Mass::simpleOccupied(0.9), true); }
 
 	EvidentialGridStorage grid;
 	CMotionDetector detector;
-	const TMotionRules rules{0.5, 2, 2.0};
+	const TMotionRules rules{0.5, 2, 4, 2.0};
 	std::size_t wall = 0, floor = 0;
 	/** Cells the beams of each insertion ended in, for settle(). */
 	std::size_t impactCells = 100;
@@ -79,17 +84,42 @@ class DetectorOnAGrid : public ::testing::Test
 
 TEST_F(DetectorOnAGrid, ArrivalBesideStructureIsConfirmedByTheNextHit)
 {
-	insertion(1.0, [&] { weakHit(); });
+	insertion(1.0, [&] {
+		weakHit();
+		thingInTheOpen();
+	});
 	EXPECT_EQ(grid.event(floor), CellEvent::Leaving) << "pending beside the wall";
-	insertion(1.1, [&] { weakHit(); });
+	insertion(1.1, [&] {
+		weakHit();
+		thingInTheOpen();
+	});
 	EXPECT_EQ(grid.event(floor), CellEvent::Appeared);
 	EXPECT_DOUBLE_EQ(grid.eventTime(floor), 1.0) << "dated from the first hit";
 }
 
+TEST_F(DetectorOnAGrid, ArrivalBesideStructureWithNothingInTheOpenStaysPending)
+{
+	// Hits that stay within the wall's clearance, as pose error moves a
+	// face by a cell (no thing that moves is that thin), while a thing
+	// arrives in the open farther than thingCells: the floor cell is not
+	// confirmed.
+	const std::size_t far = grid.geometry().index(10, 4);
+	for (const double t : {1.0, 1.1})
+		insertion(t, [&] {
+			weakHit();
+			fuse(far, Mass::simpleOccupied(0.9), true);
+		});
+	EXPECT_EQ(grid.event(far), CellEvent::Appeared);
+	EXPECT_EQ(grid.event(floor), CellEvent::Leaving);
+}
+
 TEST_F(DetectorOnAGrid, ArrivalBesideStructureHitAgainStaysAnArrival)
 {
-	insertion(1.0, [&] { weakHit(); });
-	insertion(1.1, [&] { weakHit(); });
+	for (const double t : {1.0, 1.1})
+		insertion(t, [&] {
+			weakHit();
+			thingInTheOpen();
+		});
 	ASSERT_EQ(grid.event(floor), CellEvent::Appeared);
 	// The third hit still conflicts with the free evidence the cell keeps:
 	// the thing is still there, its arrival stays, with its time.
@@ -128,7 +158,7 @@ TEST_F(DetectorOnAGrid, DefaultRulesNeedTwoSightsBeforeAChange)
 	// conflicts by 0.63: a cell seen once, as the first beams that reach a
 	// corner see it, is no arrival. Seen free twice, it is.
 	const double mapDefault = CEvidentialGridMap2D::TInsertionOptions().motionMinConflict;
-	const TMotionRules defaults{mapDefault, 2, 2.0};
+	const TMotionRules defaults{mapDefault, 2, 10, 2.0};
 	ASSERT_EQ(TMotionRules().minConflict, mapDefault) << "the detector's default is the map's";
 	const std::size_t once = grid.geometry().index(3, 3), twice = grid.geometry().index(3, 17);
 	const auto insertWithDefaults = [&](double t, const std::function<void()>& fusions) {
@@ -281,6 +311,7 @@ TEST_F(DetectorOnAGrid, CellThatFlipsBetweenHitAndFreeIsNoArrival)
 		insertion(t, [&] {
 			weakHit();
 			fuse(other, Mass::simpleOccupied(0.55), true);
+			thingInTheOpen();
 		});
 	EXPECT_EQ(grid.event(floor), CellEvent::Leaving);
 	EXPECT_FALSE(grid.flipped(other));

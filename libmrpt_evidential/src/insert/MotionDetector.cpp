@@ -15,6 +15,18 @@ double insertionTimeBefore(const EvidentialGridStorage& grid, std::size_t k)
 	const std::vector<double>& times = grid.stampTimes();
 	return times.size() > k ? times[times.size() - 1 - k] : times.front();
 }
+
+/** The cells within `r` cells of idx (a square, cut at the grid's edges). */
+struct TWindow
+{
+	int x0, x1, y0, y1;
+};
+TWindow windowAround(const GridGeometry& g, std::size_t idx, int r)
+{
+	const int cx = g.columnOf(idx), cy = g.rowOf(idx);
+	return {std::max(0, cx - r), std::min(g.sizeX - 1, cx + r), std::max(0, cy - r),
+			std::min(g.sizeY - 1, cy + r)};
+}
 }  // namespace
 
 void CMotionDetector::afterFusionOfEventCell(
@@ -43,15 +55,13 @@ bool CMotionDetector::nearStaticStructure(
 	const EvidentialGridStorage& grid, std::size_t idx) const
 {
 	const GridGeometry& g = grid.geometry();
-	const int cx = g.columnOf(idx), cy = g.rowOf(idx);
-	const int r = m_rules.clearanceCells;
-	const int x0 = std::max(0, cx - r), x1 = std::min(g.sizeX - 1, cx + r);
-	for (int y = std::max(0, cy - r); y <= std::min(g.sizeY - 1, cy + r); ++y)
-		for (int x = x0; x <= x1;)
+	const TWindow w = windowAround(g, idx, m_rules.clearanceCells);
+	for (int y = w.y0; y <= w.y1; ++y)
+		for (int x = w.x0; x <= w.x1;)
 		{
 			// Most cells are not structure; the exact test is for the few
 			// whose stored values may be.
-			const int n = std::min(x1 - x + 1, EvidentialGridStorage::kMaskWidth);
+			const int n = std::min(w.x1 - x + 1, EvidentialGridStorage::kMaskWidth);
 			std::uint32_t maybe = grid.mayBeStructure(g.index(x, y), n);
 			for (; maybe != 0; maybe &= maybe - 1)
 			{
@@ -70,14 +80,30 @@ bool CMotionDetector::nearStaticStructure(
 bool CMotionDetector::besideUnseen(const EvidentialGridStorage& grid, std::size_t idx)
 {
 	const GridGeometry& g = grid.geometry();
-	const int cx = g.columnOf(idx), cy = g.rowOf(idx);
-	for (int y = std::max(0, cy - 1); y <= std::min(g.sizeY - 1, cy + 1); ++y)
-		for (int x = std::max(0, cx - 1); x <= std::min(g.sizeX - 1, cx + 1); ++x)
+	const TWindow w = windowAround(g, idx, 1);
+	for (int y = w.y0; y <= w.y1; ++y)
+		for (int x = w.x0; x <= w.x1; ++x)
 		{
 			// An arrival was seen free before its thing came, however
 			// little free mass its hits left it.
 			const std::size_t cell = g.index(x, y);
 			if (grid.neverSeenFree(cell) && grid.event(cell) != CellEvent::Appeared)
+				return true;
+		}
+	return false;
+}
+
+bool CMotionDetector::besideOpenArrival(
+	const EvidentialGridStorage& grid, std::size_t idx) const
+{
+	const GridGeometry& g = grid.geometry();
+	const TWindow w = windowAround(g, idx, m_rules.thingCells);
+	for (int y = w.y0; y <= w.y1; ++y)
+		for (int x = w.x0; x <= w.x1; ++x)
+		{
+			const std::size_t cell = g.index(x, y);
+			if (cell != idx && isRecentArrival(grid, cell) && !nearStaticStructure(grid, cell) &&
+				!besideUnseen(grid, cell))
 				return true;
 		}
 	return false;
@@ -95,10 +121,12 @@ void CMotionDetector::settleArrival(
 	if (before == CellEvent::Leaving)
 	{
 		// Pending: confirmed by a hit at one of the next insertions, unless
-		// the cell has flipped before.
+		// the cell has flipped before, and only beside a thing seen arriving
+		// in the open.
 		const bool confirmed = !leansOccupied(grid.read(idx)) && !grid.flipped(idx) &&
 			since < grid.latestTime() &&
-			since >= insertionTimeBefore(grid, kConfirmationInsertions);
+			since >= insertionTimeBefore(grid, kConfirmationInsertions) &&
+			besideOpenArrival(grid, idx);
 		if (confirmed) grid.setEventKeepingTime(idx, CellEvent::Appeared), m_arrivals.push_back(idx);
 		return;
 	}

@@ -25,6 +25,14 @@ struct TMotionRules
 	/** Changes within this many cells of static structure are taken for
 	 * pose error. */
 	int clearanceCells = 3;
+	/** The reach, in cells, of a thing that moves (kThingSize): a pending
+	 * arrival beside structure is confirmed only this close to an arrival in
+	 * the open. */
+	int thingCells = 10;
+	/** Metres: the size of the things that move (people, boxes, carts, a
+	 * door's leaf), whose faces reach out of the clearance of the structure
+	 * they pass. */
+	static constexpr double kThingSize = 0.5;
 	/** Seconds of data time an event stays. */
 	double window = 2.0;
 };
@@ -40,7 +48,8 @@ struct TMotionRules
  *   never seen free (what stood hidden is seen for the first time), that is
  *   likely the pose's error: the cell
  *   is only pending (CellEvent::Leaving while it leans free) until one of
- *   the next kConfirmationInsertions insertions hits it again. A thing that
+ *   the next kConfirmationInsertions insertions hits it again, beside a
+ *   thing seen arriving in the open (besideOpenArrival). A thing that
  *   arrived is hit again at once; a cell that pose error flips beside a wall
  *   or a thing's face comes and goes, so a pending arrival turned down (seen
  *   free) marks the cell flipped for good (never confirmed again), and a
@@ -148,6 +157,11 @@ class CMotionDetector
 	 * turned free there is a wall's face that rays grazed, not a change of
 	 * what the map had seen. */
 	static bool besideUnseen(const EvidentialGridStorage& grid, std::size_t idx);
+	/** True when a recent arrival within thingCells of idx (idx excluded)
+	 * lies in the open: away from static structure and from cells never seen
+	 * free. A thing that moves shows faces out of the clearance of what it
+	 * passes; hits that stay within it, along a face, are the pose's error. */
+	bool besideOpenArrival(const EvidentialGridStorage& grid, std::size_t idx) const;
 	bool isRecent(const EvidentialGridStorage& grid, std::size_t idx) const
 	{
 		return grid.latestTime() - grid.eventTime(idx) <= m_rules.window;

@@ -25,6 +25,7 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 	const TMotionRules rules{
 		io.motionMinConflict,
 		static_cast<int>(std::floor(io.motionClearance / getResolution() + 0.5)),
+		static_cast<int>(std::floor(TMotionRules::kThingSize / getResolution() + 0.5)),
 		io.motionWindow};
 	motion.begin(rules);
 	const FusionRule rule = io.fusionRule;
