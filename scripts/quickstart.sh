@@ -29,7 +29,7 @@ packages=(
   g++ cmake make
   # compiles each source once per flags: the Debian packages' tree, which
   # the package test builds with the main build's flags, is then mostly
-  # cache hits (doc/reliability.md)
+  # cache hits (README.md, the Debian packages)
   ccache
   libmrpt-obs-dev libmrpt-maps-dev libmrpt-slam-dev libmrpt-apps-dev libmrpt-gui-dev
   libmrpt-tclap-dev zlib1g-dev
