@@ -77,10 +77,11 @@ bool CMotionDetector::nearStaticStructure(
 	return false;
 }
 
-bool CMotionDetector::besideUnseen(const EvidentialGridStorage& grid, std::size_t idx)
+bool CMotionDetector::besideUnseen(
+	const EvidentialGridStorage& grid, std::size_t idx, int reach)
 {
 	const GridGeometry& g = grid.geometry();
-	const TWindow w = windowAround(g, idx, 1);
+	const TWindow w = windowAround(g, idx, reach);
 	for (int y = w.y0; y <= w.y1; ++y)
 		for (int x = w.x0; x <= w.x1; ++x)
 		{
@@ -103,7 +104,7 @@ bool CMotionDetector::besideOpenArrival(
 		{
 			const std::size_t cell = g.index(x, y);
 			if (cell != idx && isRecentArrival(grid, cell) && !nearStaticStructure(grid, cell) &&
-				!besideUnseen(grid, cell))
+				!besideUnseen(grid, cell, 1))
 				return true;
 		}
 	return false;
@@ -112,7 +113,7 @@ bool CMotionDetector::besideOpenArrival(
 void CMotionDetector::settleArrival(
 	EvidentialGridStorage& grid, std::size_t idx, CellEvent before)
 {
-	if (!nearStaticStructure(grid, idx) && !besideUnseen(grid, idx))
+	if (!nearStaticStructure(grid, idx) && !besideUnseen(grid, idx, 1))
 	{
 		grid.setEvent(idx, CellEvent::Appeared), m_arrivals.push_back(idx);
 		return;
@@ -167,12 +168,17 @@ void CMotionDetector::settle(EvidentialGridStorage& grid, std::size_t impactCell
 			// free yet. Remember when this began.
 			if (before != CellEvent::Leaving) grid.setEvent(c.index, CellEvent::Leaving);
 		}
-		else if (!nearStaticStructure(grid, c.index) && !besideUnseen(grid, c.index))
+		else if (
+			!nearStaticStructure(grid, c.index) &&
+			!besideUnseen(grid, c.index, m_rules.clearanceCells))
 		{
 			// Free now, and nothing stands beside it that could explain a
 			// ray through it: no structure, and no unseen inside of a wall
 			// whose face a ray grazed (the face's cells then all turn free
-			// together, and none of them counts as structure).
+			// together, and none of them counts as structure). That inside
+			// may lie a row or two behind the face: a thin thing (a door's
+			// leaf) is a face, a row of cells rays crossed at times, and
+			// what no ray reached, within the clearance.
 			if (before == CellEvent::Leaving)
 				grid.setEventKeepingTime(c.index, CellEvent::Disappeared);
 			else

@@ -61,9 +61,9 @@ struct TMotionRules
  *   seen free. While its evidence still leans occupied (a ray may have
  *   grazed a wall or a pillar, and the static map does not say free yet)
  *   the cell is only Leaving (not reported); once it no longer leans
- *   occupied, away from static structure and from cells never seen free (a
- *   wall's inside, behind a face that rays grazed), its departure is
- *   reported, dated from the first free sight. An arrival stays while its
+ *   occupied, away from static structure and from cells never seen free
+ *   (within the clearance: a wall's inside, or what lies behind a thin
+ *   thing, behind a face that rays grazed), its departure is reported, dated from the first free sight. An arrival stays while its
  *   thing does; a departure seen free again after its window is over.
  * - A misplaced scan: when a large share of the cells a scan's beams ended
  *   in were seen free before (kMisplacedShare of them, and at least
@@ -151,12 +151,12 @@ class CMotionDetector
 	 * (a wall's inside), and is not an arrival (of any age: a thing that came
 	 * and stays is no structure) or leaving. */
 	bool nearStaticStructure(const EvidentialGridStorage& grid, std::size_t idx) const;
-	/** True when a cell next to idx was never seen free (n(F) = 0; an
-	 * arrival's cell counts as seen): a hit there is the first sight of what
-	 * stood hidden behind it (a block's corner, a wall's end), and a cell
-	 * turned free there is a wall's face that rays grazed, not a change of
-	 * what the map had seen. */
-	static bool besideUnseen(const EvidentialGridStorage& grid, std::size_t idx);
+	/** True when a cell within `reach` cells of idx was never seen free
+	 * (n(F) = 0; an arrival's cell counts as seen): a hit next to one is the
+	 * first sight of what stood hidden behind it (a block's corner, a wall's
+	 * end), and a cell turned free within the clearance of one is a face
+	 * that rays grazed, not a change of what the map had seen. */
+	static bool besideUnseen(const EvidentialGridStorage& grid, std::size_t idx, int reach);
 	/** True when a recent arrival within thingCells of idx (idx excluded)
 	 * lies in the open: away from static structure and from cells never seen
 	 * free. A thing that moves shows faces out of the clearance of what it
