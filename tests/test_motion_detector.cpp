@@ -47,13 +47,13 @@ class DetectorOnAGrid : public ::testing::Test
 			});
 	}
 	/** One insertion at data time t, whose fusions `fusions` makes, as the
-	 * map makes it: the recent arrivals that its beams cross in their free
-	 * margins (crossedInMargin) judged first. */
+	 * map makes it: the recent arrivals that its beams cross without free
+	 * evidence (crossedWithoutFreeEvidence) judged first. */
 	void insertion(double t, const std::function<void()>& fusions)
 	{
 		grid.beginInsertion(t);
 		detector.begin(rules);
-		detector.judgeArrivalsInMargins(grid, crossedInMargin);
+		detector.judgeCrossedArrivals(grid, crossedWithoutFreeEvidence);
 		fusions();
 		detector.settle(grid, impactCells);
 	}
@@ -79,7 +79,7 @@ class DetectorOnAGrid : public ::testing::Test
 	std::size_t wall = 0, floor = 0;
 	/** Cells the beams of each insertion ended in, for settle(). */
 	std::size_t impactCells = 100;
-	std::function<bool(std::size_t)> crossedInMargin = [](std::size_t) { return false; };
+	std::function<bool(std::size_t)> crossedWithoutFreeEvidence = [](std::size_t) { return false; };
 };
 }  // namespace
 
@@ -414,7 +414,7 @@ TEST_F(DetectorOnAGrid, ArrivalsStayListedWhileTheGridGrowsIntoItsRoom)
 	ASSERT_EQ(grid.geometry().index(3, 3), cell);
 	// A beam crosses the arrival within its free margin (no free evidence
 	// for the cell): it left all the same.
-	crossedInMargin = [&](std::size_t idx) { return idx == cell; };
+	crossedWithoutFreeEvidence = [&](std::size_t idx) { return idx == cell; };
 	insertion(1.1, [] {});
 	EXPECT_EQ(grid.event(cell), CellEvent::Disappeared);
 }

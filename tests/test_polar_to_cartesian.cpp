@@ -410,9 +410,48 @@ TEST(PolarToCartesian, FreeMarginHoldsWhatBeamsCrossedShortOfTheirImpact)
 		options);
 	CPolarToCartesian transform;
 	transform.setup(polar, PlanarSensorPose{0, 0, 0, false});
-	EXPECT_TRUE(transform.inFreeMargin(3.0 - 0.06, 0.0));
-	EXPECT_TRUE(transform.inFreeMargin(3.0 - 0.15, 0.0));
-	EXPECT_FALSE(transform.inFreeMargin(3.0 - 0.04, 0.0));
-	EXPECT_FALSE(transform.inFreeMargin(3.0 - 0.3, 0.0));
-	EXPECT_FALSE(transform.inFreeMargin(3.0 + 0.5, 0.0));  // behind the wall
+	EXPECT_TRUE(transform.crossedWithoutFreeEvidence(3.0 - 0.06, 0.0));
+	EXPECT_TRUE(transform.crossedWithoutFreeEvidence(3.0 - 0.15, 0.0));
+	EXPECT_FALSE(transform.crossedWithoutFreeEvidence(3.0 - 0.04, 0.0));
+	EXPECT_FALSE(transform.crossedWithoutFreeEvidence(3.0 - 0.3, 0.0));
+	EXPECT_FALSE(transform.crossedWithoutFreeEvidence(3.0 + 0.5, 0.0));  // behind the wall
+}
+
+TEST(PolarToCartesian, BeamPastAThingCrossesThePointsInItsShadowsEdge)
+{
+	// A thing 1.5 m ahead on the left of the view (beams at 0 degrees and
+	// more), a wall 4 m ahead on the right. Between the last beam that
+	// passes the thing and the first that hits it, past the thing's range,
+	// one beam crossed a point and the other stopped at the thing in front
+	// of it: free evidence stops there at the nearer sector's limit, but
+	// the point was crossed (where a thing that walked on had stood). Within
+	// kOccluderGap of the thing's face the point may be the thing's own (a
+	// side seen at a slant): not crossed.
+	TSourceGridOptions options;
+	options.sensorModel.model = SensorModel::MultiEcho;
+	options.binSize = 0.05;
+	options.maxRange = 20.0;
+	options.freeMargin = 0.1;
+	CPolarSourceGrid polar;
+	polar.build(
+		test::scanByAngle(
+			181, test::ScanSetup().aperture(M_PI / 2),
+			[](double a) { return a >= -1e-9 ? 1.5 / std::cos(a) : 4.0 / std::cos(a); }),
+		options);
+	CPolarToCartesian transform;
+	transform.setup(polar, PlanarSensorPose{0, 0, 0, false});
+	const double edge = -0.25 * M_PI / 180.0;  // between the two beams
+	const auto at = [&](double range) {
+		return transform.crossedWithoutFreeEvidence(
+			range * std::cos(edge), range * std::sin(edge));
+	};
+	EXPECT_TRUE(at(2.5));
+	EXPECT_TRUE(at(1.5 + CPolarToCartesian::kOccluderGap + 0.06));
+	EXPECT_FALSE(at(1.5 + CPolarToCartesian::kOccluderGap - 0.06)) << "the thing's own";
+	EXPECT_FALSE(at(1.0)) << "free evidence from both";
+	EXPECT_FALSE(at(4.0 + 0.5)) << "behind the wall";
+	const double behindThing = 1.0 * M_PI / 180.0;
+	EXPECT_FALSE(transform.crossedWithoutFreeEvidence(
+		2.5 * std::cos(behindThing), 2.5 * std::sin(behindThing)))
+		<< "no beam crossed it";
 }

@@ -103,10 +103,12 @@ class CMotionDetector
 	}
 
 	/** Before the scan's cells are fused: the recent arrivals that its beams
-	 * crossed within the free margin (whose cells get no free evidence) are
-	 * candidate departures all the same: an arrival is no wall to protect. */
-	template <typename CrossedInMargin>
-	void judgeArrivalsInMargins(const EvidentialGridStorage& grid, CrossedInMargin&& crossed)
+	 * crossed without giving them free evidence (within the free margin, or
+	 * past the nearer sector's free limit beside what the other beam hit)
+	 * are candidate departures all the same: an arrival is no wall to
+	 * protect. */
+	template <typename Crossed>
+	void judgeCrossedArrivals(const EvidentialGridStorage& grid, Crossed&& crossed)
 	{
 		// A grid whose cells moved (reset, read from a file, grown into a new
 		// block) has them at other indices: the list starts again (its
@@ -182,7 +184,7 @@ class CMotionDetector
 	};
 	TMotionRules m_rules;
 	std::vector<TCandidate> m_candidates;
-	/** Cells set Appeared, to find them in the free margins of later scans,
+	/** Cells set Appeared, to find those that later scans cross,
 	 * at their indices in the grid of layout `m_listedLayout`. */
 	std::vector<std::size_t> m_arrivals;
 	std::size_t m_listedLayout = 0;

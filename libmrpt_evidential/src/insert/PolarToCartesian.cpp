@@ -380,7 +380,7 @@ double CPolarToCartesian::vacuousArea() const
 	return area;
 }
 
-bool CPolarToCartesian::inFreeMargin(double x, double y) const
+bool CPolarToCartesian::crossedWithoutFreeEvidence(double x, double y) const
 {
 	if (!m_polar || m_box.empty()) return false;
 	// Outside the informed region's box no beam passes: most of a spinning
@@ -392,22 +392,27 @@ bool CPolarToCartesian::inFreeMargin(double x, double y) const
 	if (angle >= m_span) return false;
 	// Both sectors around the point, as the bilinear mix takes them: a beam
 	// that passes beside a thing standing in part of the cell is not a
-	// crossing of the cell.
+	// crossing of the cell, but one that stopped well short of it, at
+	// something else, says nothing of the cell either way.
 	const auto ns = detail::neighbours(
 		angle * m_invSpacing - 0.5, m_polar->sectorCount(), m_polar->fullTurn());
-	const double range = std::sqrt(range2);
-	bool withheld = false;
+	const double range = std::sqrt(range2), bin = m_polar->binSize();
+	bool crossed = false, withheld = false;
 	for (const std::size_t s : {ns.lo, ns.hi})
 	{
 		const std::vector<double>& impacts = m_polar->impacts(s);
+		if (impacts.empty()) return false;
 		// A bin short of the impact the beam has crossed the point: a thing
 		// whose face stood there has moved back by a cell (the cell holding
 		// the impact is the one seen occupied).
-		if (impacts.empty() || !(range < impacts.front() - m_polar->binSize()))
+		const double nearest = impacts.front();
+		if (range < nearest - bin)
+			crossed = true;
+		else if (!(nearest < range - std::max(kOccluderGap, bin)))
 			return false;
 		withheld = withheld || range >= m_sectorSpans[s].freeLimit;
 	}
-	return withheld;
+	return crossed && withheld;
 }
 
 CPolarToCartesian::TRows CPolarToCartesian::prepareRows(const GridGeometry& grid)

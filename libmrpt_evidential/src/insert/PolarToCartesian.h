@@ -138,11 +138,20 @@ class CPolarToCartesian
 		return {m_directions[2 * s + 2], m_directions[2 * s + 3]};
 	}
 
-	/** True when world point (x, y) lies in a sector's span between its free
-	 * limit and a bin short of its nearest impact (in both sectors around
-	 * it): a beam crossed it, but the free margin kept its free evidence
-	 * from the cells. */
-	bool inFreeMargin(double x, double y) const;
+	/** True when a beam crossed world point (x, y) but gave its cell no
+	 * free evidence: each of the two sectors around the point either
+	 * crossed it (it lies a bin short of the sector's nearest impact) or
+	 * stopped at something at least kOccluderGap in front of it, one of
+	 * them crossed it, and it lies past the free limit of one of them (in
+	 * the free margin before an impact, or where free evidence stops at the
+	 * nearer sector's limit, beside what the other beam hit). */
+	bool crossedWithoutFreeEvidence(double x, double y) const;
+	/** Metres: a beam whose nearest impact lies this much in front of a
+	 * point stopped at something else than what may stand at the point (a
+	 * thing that walked on, now between the point and the sensor), not at
+	 * a part of the point's own thing seen at a slant. Measured on the
+	 * simulated scenes, doc/dynamics.md. */
+	static constexpr double kOccluderGap = 0.2;
 
 	/** True when the last prepareRows() outlined the vacuous bands between
 	 * near and far sectors, so that the visit leaves their cells out (a

@@ -82,8 +82,8 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 	const double w = uniform.free;
 	const std::uint16_t occupiedBelow = occupiedBelowFor(w);
 	const GridGeometry& g = geometry();
-	motion.judgeArrivalsInMargins(m_grid, [&](std::size_t idx) {
-		return transform.inFreeMargin(
+	motion.judgeCrossedArrivals(m_grid, [&](std::size_t idx) {
+		return transform.crossedWithoutFreeEvidence(
 			g.cellCenterX(g.columnOf(idx)), g.cellCenterY(g.rowOf(idx)));
 	});
 
