@@ -1,7 +1,8 @@
 /* The motion layer (issue 11): the conflict of each fusion split by its
  * cause, a box that moves in a simulated room flagged where it left and where
- * it came, the walls left alone under pose noise and by scans whose pose is
- * off, the window, and what survives a copy and a file. */
+ * it came, no arrival kept at the edge of a moved thing's new shadow, the
+ * walls left alone under pose noise and by scans whose pose is off, the
+ * window, and what survives a copy and a file. */
 #include <gtest/gtest.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
@@ -167,6 +168,37 @@ TEST(Motion, BoxThatMovesIsFlaggedAtBothPlacesAndNothingElse)
 	EXPECT_EQ(map.getCellDecision(ax, ay), Decision::Occupied);
 	EXPECT_EQ(map.getCellDecision(dx, dy), Decision::Free);
 	EXPECT_TRUE(std::isnan(map.getCellMotionTime(0.0, -2.0)));
+}
+
+TEST(Motion, ThingThatMovedLeavesNoArrivalAtItsNewShadowsEdge)
+{
+	// A thing stands 3 m before a robot that does not move, then steps a
+	// metre nearer and to the west: its old face east of the new place's
+	// shadow is seen free again, but the cells at the shadow's very edge lie
+	// between a sector that passes them and one that stops at the thing's
+	// new face in front of them, where free evidence stops. One beam crossed
+	// them: their arrival is over all the same.
+	CEvidentialGridMap2D map = roomMap();
+	const CPose3D robot(0.0, -2.5, 0.0, M_PI / 2, 0, 0);
+	const test::TBox before{-0.2, 0.5, 0.2, 0.9}, after{-0.4, -0.5, 0.0, -0.1};
+	for (int k = 0; k < 50; ++k)
+	{
+		std::vector<test::TBox> world = test::roomWalls();
+		if (k >= 30) world.push_back(k < 40 ? before : after);
+		map.insertObservation(test::scanOfBoxes(world, robot, kSetup.at(0.1 * k)), robot);
+		if (k == 39)
+		{
+			ASSERT_GT(map.countMotion().appeared, 5u) << "the thing's face";
+		}
+	}
+	// Arrivals left outside the new place: only those its shadow hides.
+	const double shadowEast = std::atan2(after.yMin - robot.y(), after.xMax - robot.x());
+	for (const auto& [x, y] : map.getAppearedCellCenters())
+	{
+		if (near(after, x, y, 0.1)) continue;
+		EXPECT_GT(std::atan2(y - robot.y(), x - robot.x()), shadowEast)
+			<< "a stale arrival at (" << x << ", " << y << ")";
+	}
 }
 
 TEST(Motion, WindowExpires)
