@@ -63,8 +63,9 @@ struct TMotionRules
  *   the cell is only Leaving (not reported); once it no longer leans
  *   occupied, away from static structure and from cells never seen free
  *   (within the clearance: a wall's inside, or what lies behind a thin
- *   thing, behind a face that rays grazed), its departure is reported, dated from the first free sight. An arrival stays while its
- *   thing does; a departure seen free again after its window is over.
+ *   thing, behind a face that rays grazed), its departure is reported,
+ *   dated from the first free sight. An arrival stays while its thing
+ *   does; a departure seen free again after its window is over.
  * - A misplaced scan: when a large share of the cells a scan's beams ended
  *   in were seen free before (kMisplacedShare of them, and at least
  *   kMisplacedArrivals), the scan disagrees with the map as a whole. That
