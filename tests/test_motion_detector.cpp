@@ -67,6 +67,21 @@ class DetectorOnAGrid : public ::testing::Test
 	 * cell still leans free after a few of them (as in cells a thing or a
 	 * wall covers in part), but conflict enough for an event. */
 	void weakHit() { fuse(floor, Mass::simpleOccupied(0.55), true); }
+	/** Free sights of `cells`, one insertion a tenth of a second from data
+	 * time t on, until none of them leans occupied (30 at most), as rays
+	 * that cross them. */
+	void seeFreeUntilNoneLeansOccupied(double t, const std::vector<std::size_t>& cells)
+	{
+		const auto anyLeans = [&] {
+			return std::any_of(cells.begin(), cells.end(), [&](std::size_t idx) {
+				return leansOccupied(grid.read(idx));
+			});
+		};
+		for (int k = 0; k < 30 && anyLeans(); ++k, t += 0.1)
+			insertion(t, [&] {
+				for (const std::size_t idx : cells) fuse(idx, Mass::simpleFree(0.7), false);
+			});
+	}
 	void freeSight() { fuse(floor, Mass::simpleFree(0.7), false); }
 	/** A beam's end on a thing's face in the open, four cells from the floor
 	 * cell (within thingCells) and six from the wall: the part of a thing
@@ -247,13 +262,7 @@ TEST_F(DetectorOnAGrid, GrazedFaceBesideAWallsUnseenInsideIsNoDeparture)
 			fuse(face, Mass::simpleOccupied(0.9), true);
 			fuse(thing, Mass::simpleOccupied(0.9), true);
 		});
-	double t = 1.1;
-	for (int k = 0; k < 30 && (leansOccupied(grid.read(face)) || leansOccupied(grid.read(thing)));
-		 ++k, t += 0.1)
-		insertion(t, [&] {
-			fuse(face, Mass::simpleFree(0.7), false);
-			fuse(thing, Mass::simpleFree(0.7), false);
-		});
+	seeFreeUntilNoneLeansOccupied(1.1, {face, thing});
 	ASSERT_FALSE(leansOccupied(grid.read(face)));
 	ASSERT_FALSE(leansOccupied(grid.read(thing)));
 	EXPECT_EQ(grid.event(thing), CellEvent::Disappeared);
@@ -287,12 +296,9 @@ TEST_F(DetectorOnAGrid, GrazedFaceOfAThinThingIsNoDeparture)
 	ASSERT_TRUE(leansOccupied(grid.read(behind)));
 	ASSERT_FALSE(grid.neverSeenFree(behind));
 	ASSERT_TRUE(grid.neverSeenFree(g.index(10, 12)));
-	double t = 1.1;
-	for (int k = 0; k < 30 && leansOccupied(grid.read(face)); ++k, t += 0.1)
-		insertion(t, [&] {
-			for (int dx = -2; dx <= 2; ++dx)
-				fuse(g.index(10 + dx, 10), Mass::simpleFree(0.7), false);
-		});
+	std::vector<std::size_t> faceRow;
+	for (int dx = -2; dx <= 2; ++dx) faceRow.push_back(g.index(10 + dx, 10));
+	seeFreeUntilNoneLeansOccupied(1.1, faceRow);
 	ASSERT_FALSE(leansOccupied(grid.read(face)));
 	EXPECT_EQ(grid.event(face), CellEvent::None);
 }

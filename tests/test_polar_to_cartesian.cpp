@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "support/scans.h"
@@ -16,6 +17,26 @@ using mrpt::obs::CObservation2DRangeScan;
 
 namespace
 {
+/** The transform of a scan of `beams` beams over `aperture` (rad) whose
+ * ranges `rangeAt` gives by angle, seen by the precise model (5 cm bins,
+ * 20 m, free margin `margin`) from the origin facing +x; `polar` holds the
+ * rows the transform reads. */
+template <typename F>
+void setUpPreciseScan(
+	CPolarSourceGrid& polar, CPolarToCartesian& transform, std::size_t beams, double aperture,
+	double margin, F&& rangeAt)
+{
+	TSourceGridOptions options;
+	options.sensorModel.model = SensorModel::MultiEcho;
+	options.binSize = 0.05;
+	options.maxRange = 20.0;
+	options.freeMargin = margin;
+	polar.build(
+		test::scanByAngle(beams, test::ScanSetup().aperture(aperture), std::forward<F>(rangeAt)),
+		options);
+	transform.setup(polar, PlanarSensorPose{0, 0, 0, false});
+}
+
 /** The free margin along sector s's beam, from the definition: freeMargin
  * across the surface its nearest impact lies on, the surface's slope taken
  * from the nearest impacts two sectors away on the flatter side, the
@@ -356,19 +377,10 @@ TEST(PolarToCartesian, FreeMarginHoldsAcrossAWallAtAnyIncidence)
 	// the incidence up to 60 degrees (a margin along the beam would protect
 	// only its cosine there), and the margin does not grow on a head-on wall.
 	const double margin = 0.2;
-	TSourceGridOptions options;
-	options.sensorModel.model = SensorModel::MultiEcho;
-	options.binSize = 0.05;
-	options.maxRange = 20.0;
-	options.freeMargin = margin;
 	CPolarSourceGrid polar;
-	polar.build(
-		test::scanByAngle(
-			301, test::ScanSetup().aperture(150 * M_PI / 180),
-			[](double a) { return 3.0 / std::cos(a); }),
-		options);
 	CPolarToCartesian transform;
-	transform.setup(polar, PlanarSensorPose{0, 0, 0, false});
+	setUpPreciseScan(
+		polar, transform, 301, 150 * M_PI / 180, margin, [](double a) { return 3.0 / std::cos(a); });
 	EvidentialGridStorage grid;
 	grid.reset(-1, 4, -6, 6, 0.025, 1'000'000);
 	const GridGeometry& g = grid.geometry();
@@ -398,18 +410,9 @@ TEST(PolarToCartesian, FreeMarginHoldsWhatBeamsCrossedShortOfTheirImpact)
 	// no free evidence (the motion layer's test of an arrival that left);
 	// before the limit the point got free evidence, and within a bin of the
 	// impact it is the impact's.
-	TSourceGridOptions options;
-	options.sensorModel.model = SensorModel::MultiEcho;
-	options.binSize = 0.05;
-	options.maxRange = 20.0;
-	options.freeMargin = 0.2;
 	CPolarSourceGrid polar;
-	polar.build(
-		test::scanByAngle(
-			181, test::ScanSetup().aperture(M_PI / 2), [](double a) { return 3.0 / std::cos(a); }),
-		options);
 	CPolarToCartesian transform;
-	transform.setup(polar, PlanarSensorPose{0, 0, 0, false});
+	setUpPreciseScan(polar, transform, 181, M_PI / 2, 0.2, [](double a) { return 3.0 / std::cos(a); });
 	EXPECT_TRUE(transform.crossedWithoutFreeEvidence(3.0 - 0.06, 0.0));
 	EXPECT_TRUE(transform.crossedWithoutFreeEvidence(3.0 - 0.15, 0.0));
 	EXPECT_FALSE(transform.crossedWithoutFreeEvidence(3.0 - 0.04, 0.0));
@@ -427,19 +430,11 @@ TEST(PolarToCartesian, BeamPastAThingCrossesThePointsInItsShadowsEdge)
 	// the point was crossed (where a thing that walked on had stood). Within
 	// kOccluderGap of the thing's face the point may be the thing's own (a
 	// side seen at a slant): not crossed.
-	TSourceGridOptions options;
-	options.sensorModel.model = SensorModel::MultiEcho;
-	options.binSize = 0.05;
-	options.maxRange = 20.0;
-	options.freeMargin = 0.1;
 	CPolarSourceGrid polar;
-	polar.build(
-		test::scanByAngle(
-			181, test::ScanSetup().aperture(M_PI / 2),
-			[](double a) { return a >= -1e-9 ? 1.5 / std::cos(a) : 4.0 / std::cos(a); }),
-		options);
 	CPolarToCartesian transform;
-	transform.setup(polar, PlanarSensorPose{0, 0, 0, false});
+	setUpPreciseScan(polar, transform, 181, M_PI / 2, 0.1, [](double a) {
+		return a >= -1e-9 ? 1.5 / std::cos(a) : 4.0 / std::cos(a);
+	});
 	const double edge = -0.25 * M_PI / 180.0;  // between the two beams
 	const auto at = [&](double range) {
 		return transform.crossedWithoutFreeEvidence(
