@@ -1,7 +1,8 @@
 /* The motion layer's decisions on hand-made fusions (src/insert/): arrivals
- * beside static structure (the inside of a wall included) wait for a hit at
- * the next insertions, beside a thing seen arriving in the open, and stay
- * when hit again, a thing that arrived long ago
+ * beside static structure (the inside of a wall included, and the spread in
+ * front of a face next to them; not what the map saw free two cells away)
+ * wait for a hit at the next insertions, beside a thing seen arriving in
+ * the open, and stay when hit again, a thing that arrived long ago
  * is no structure, a cell that flips between hit and free does not become
  * an arrival (then or later), nor does a hit beside cells never seen free at
  * once, a departure waits until the cell no longer leans occupied and is
@@ -83,6 +84,25 @@ class DetectorOnAGrid : public ::testing::Test
 			});
 	}
 	void freeSight() { fuse(floor, Mass::simpleFree(0.7), false); }
+	/** The cells around (6, 5) seen free twice, then
+	 * `standing` hit by three insertions' beams (or, without `impacts`,
+	 * reached by their spread only), fused as the map fuses cells that no
+	 * event is judged in, until it leans occupied. */
+	void standBesideSeenFreeFloor(std::size_t standing, bool impacts)
+	{
+		const GridGeometry& g = grid.geometry();
+		for (int k = 0; k < 2; ++k)
+			insertion(0.1 * k, [&] {
+				for (int y = 3; y <= 7; ++y)
+					for (int x = 3; x <= 9; ++x) grid.fuseNormalized(g.index(x, y), Mass::simpleFree(0.9));
+			});
+		for (int k = 0; k < 3; ++k)
+		{
+			grid.beginInsertion(0.2 + 0.1 * k);
+			grid.fuseNormalized(standing, Mass::simpleOccupied(0.9));
+			if (impacts) grid.markImpact(standing);
+		}
+	}
 	/** A beam's end on a thing's face in the open, four cells from the floor
 	 * cell (within thingCells) and six from the wall: the part of a thing
 	 * that moves which reaches out of the wall's clearance. */
@@ -242,6 +262,36 @@ TEST_F(DetectorOnAGrid, InsideOfAWallIsStructure)
 	});
 	EXPECT_EQ(grid.event(cell), CellEvent::Leaving) << "pending";
 	EXPECT_EQ(grid.event(open), CellEvent::Appeared) << "the same hit in the open";
+}
+
+TEST_F(DetectorOnAGrid, ArrivalBesideWhatTheMapSawFreeBeforeItLeanedOccupied)
+{
+	// Two cells from the hit, a thing the map saw free before it leaned
+	// occupied: the pose's error moves a face two cells only where the
+	// face's spread lies along it (at a grazing angle), and such a face is
+	// one no beam ever crossed. The hit is an arrival at once. Next to the
+	// hit, the spread in front of a face (seen free, then occupied by the
+	// imprecision of beams that end beside it, never an impact itself): the
+	// face moved by the pose's error, pending.
+	struct TCase
+	{
+		int column;
+		bool impacts;
+		CellEvent expected;
+	};
+	for (const TCase c : {TCase{5, true, CellEvent::Appeared}, TCase{6, false, CellEvent::Leaving}})
+	{
+		SCOPED_TRACE(testing::Message() << "standing in column " << c.column << ", the hit in 7");
+		grid.reset(0.0, 1.0, 0.0, 1.0, 0.05, 1000);
+		const GridGeometry& g = grid.geometry();
+		const std::size_t standing = g.index(c.column, 5), cell = g.index(7, 5);
+		standBesideSeenFreeFloor(standing, c.impacts);
+		ASSERT_TRUE(leansOccupied(grid.read(standing)));
+		ASSERT_EQ(grid.heldImpact(standing), c.impacts);
+		ASSERT_EQ(grid.event(standing), CellEvent::None);
+		insertion(1.0, [&] { fuse(cell, Mass::simpleOccupied(0.9), true); });
+		EXPECT_EQ(grid.event(cell), c.expected);
+	}
 }
 
 TEST_F(DetectorOnAGrid, GrazedFaceBesideAWallsUnseenInsideIsNoDeparture)

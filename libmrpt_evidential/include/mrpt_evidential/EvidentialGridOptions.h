@@ -90,7 +90,10 @@ struct TEvidentialInsertionOptions : public mrpt::config::CLoadableOptions
 	/** `motionClearance`: metres; a change closer than this to static
 	 * structure (cells that lean occupied and are not themselves moving)
 	 * is taken for the error of the robot's pose, not for motion,
-	 * [0, 10], default 0.1. */
+	 * [0, 10], default 0.1. For an arrival it is measured from the
+	 * imprecise model's spread in front of a face (the clearance less
+	 * min(imprecision, freeMargin), at least one cell), and from faces no
+	 * beam ever crossed (doc/dynamics.md). */
 	double motionClearance = 0.10;
 	/** 3-D clouds (CObservationPointCloud, CObservationVelodyneScan,
 	 * CObservation3DRangeScan): `groundRemoval`, where the ground lies:

@@ -3,6 +3,7 @@
 #include "insert/MotionDetector.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace mrpt_evidential
 {
@@ -94,6 +95,28 @@ bool CMotionDetector::besideUnseen(
 	return false;
 }
 
+bool CMotionDetector::besideOccupied(
+	const EvidentialGridStorage& grid, std::size_t idx) const
+{
+	const GridGeometry& g = grid.geometry();
+	const int near = m_rules.arrivalClearanceCells;
+	const int cx = g.columnOf(idx), cy = g.rowOf(idx);
+	const TWindow w = windowAround(g, idx, std::max(near, m_rules.clearanceCells));
+	for (int y = w.y0; y <= w.y1; ++y)
+		for (int x = w.x0; x <= w.x1; ++x)
+		{
+			const std::size_t cell = g.index(x, y);
+			if (cell == idx || !leansOccupied(grid.read(cell))) continue;
+			// Farther than the next cells, only what no beam ever crossed:
+			// a face seen at a grazing angle, whose spread lies along it.
+			const bool nearby = std::max(std::abs(x - cx), std::abs(y - cy)) <= near;
+			if (!nearby && !grid.neverSeenFree(cell)) continue;
+			const CellEvent e = grid.event(cell);
+			if (e != CellEvent::Leaving && e != CellEvent::Appeared) return true;
+		}
+	return false;
+}
+
 bool CMotionDetector::besideOpenArrival(
 	const EvidentialGridStorage& grid, std::size_t idx) const
 {
@@ -113,7 +136,7 @@ bool CMotionDetector::besideOpenArrival(
 void CMotionDetector::settleArrival(
 	EvidentialGridStorage& grid, std::size_t idx, CellEvent before)
 {
-	if (!nearStaticStructure(grid, idx) && !besideUnseen(grid, idx, 1))
+	if (!besideOccupied(grid, idx) && !besideUnseen(grid, idx, 1))
 	{
 		grid.setEvent(idx, CellEvent::Appeared), m_arrivals.push_back(idx);
 		return;

@@ -35,6 +35,12 @@ struct TMotionRules
 	static constexpr double kThingSize = 0.5;
 	/** Seconds of data time an event stays. */
 	double window = 2.0;
+	/** Arrivals within this many cells of a cell that leans occupied and
+	 * is no thing that moved are taken for pose error. The sensor model's
+	 * spread makes the cells in front of a face lean occupied, so this is
+	 * the clearance less that spread (measured from the spread, not the
+	 * face), at least the next cell; 0 with no clearance. */
+	int arrivalClearanceCells = 1;
 };
 
 /** Collects a scan's candidate events as its cells are fused, then settles
@@ -42,11 +48,12 @@ struct TMotionRules
  * sees the whole scan, and every cell is fused once).
  *
  * - Something appeared: a cell seen free now holds a beam's end (conflict
- *   before(F) observed(O) of at least minConflict). Beside static structure
- *   (a cell that leans occupied, held beams' ends or was never seen free,
- *   and is not itself an arrival, of any age, or leaving), or beside a cell
- *   never seen free (what stood hidden is seen for the first time), that is
- *   likely the pose's error: the cell
+ *   before(F) observed(O) of at least minConflict). Beside what leans
+ *   occupied and is not itself an arrival, of any age, or leaving (within
+ *   arrivalClearanceCells: a face, or the imprecision's spread in front of
+ *   it; within the clearance: a face no beam ever crossed), or beside a
+ *   cell never seen free (what stood hidden is seen for the first time),
+ *   that is likely the pose's error: the cell
  *   is only pending (CellEvent::Leaving while it leans free) until one of
  *   the next kConfirmationInsertions insertions hits it again, beside a
  *   thing seen arriving in the open (besideOpenArrival). A thing that
@@ -160,6 +167,15 @@ class CMotionDetector
 	 * end), and a cell turned free within the clearance of one is a face
 	 * that rays grazed, not a change of what the map had seen. */
 	static bool besideUnseen(const EvidentialGridStorage& grid, std::size_t idx, int reach);
+	/** True when a cell near idx (idx excluded) leans occupied and is not
+	 * an arrival or leaving, within arrivalClearanceCells (a face the
+	 * pose's error moves, or the imprecision's spread in front of it, which
+	 * was seen free before it leaned occupied), or within clearanceCells
+	 * and never seen free (a face seen at a grazing angle, whose spread
+	 * lies along it, not in front). A thing that walks on leaves no spread
+	 * behind that leans occupied: one scan's spread does not turn a free
+	 * cell. */
+	bool besideOccupied(const EvidentialGridStorage& grid, std::size_t idx) const;
 	/** True when a recent arrival within thingCells of idx (idx excluded)
 	 * lies in the open: away from static structure and from cells never seen
 	 * free. A thing that moves shows faces out of the clearance of what it

@@ -22,11 +22,18 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 	const TInsertionOptions& io = insertionOptions;
 	CPolarToCartesian& transform = m_workspace->transform;
 	CMotionDetector& motion = m_workspace->motion;
+	const auto cells = [this](double metres) {
+		return static_cast<int>(std::floor(metres / getResolution() + 0.5));
+	};
+	const int clearance = cells(io.motionClearance);
+	// The imprecise model's spread leans occupied in front of a face as far
+	// as no free evidence reaches it: the lesser of imprecision and margin.
+	const int spread = io.sensorModel == SensorModel::ImpreciseMultiEcho
+		? cells(std::min(io.imprecision, io.freeMargin))
+		: 0;
 	const TMotionRules rules{
-		io.motionMinConflict,
-		static_cast<int>(std::floor(io.motionClearance / getResolution() + 0.5)),
-		static_cast<int>(std::floor(TMotionRules::kThingSize / getResolution() + 0.5)),
-		io.motionWindow};
+		io.motionMinConflict, clearance, cells(TMotionRules::kThingSize), io.motionWindow,
+		clearance == 0 ? 0 : std::max(1, clearance - spread)};
 	motion.begin(rules);
 	const FusionRule rule = io.fusionRule;
 	const ConflictHandling handling = io.conflictHandling;
