@@ -17,6 +17,16 @@ double insertionTimeBefore(const EvidentialGridStorage& grid, std::size_t k)
 	return times.size() > k ? times[times.size() - 1 - k] : times.front();
 }
 
+/** The cell leans occupied and is no thing that moved: a thing that
+ * arrived, however long ago, is no structure (its sides, first seen later,
+ * are arrivals too), nor is a cell leaving. */
+bool standsStill(const EvidentialGridStorage& grid, std::size_t cell)
+{
+	if (!leansOccupied(grid.read(cell))) return false;
+	const CellEvent e = grid.event(cell);
+	return e != CellEvent::Leaving && e != CellEvent::Appeared;
+}
+
 /** The cells within `r` cells of idx (a square, cut at the grid's edges). */
 struct TWindow
 {
@@ -67,11 +77,7 @@ bool CMotionDetector::nearStaticStructure(
 			for (; maybe != 0; maybe &= maybe - 1)
 			{
 				const std::size_t cell = g.index(x + __builtin_ctz(maybe), y);
-				if (cell == idx || !leansOccupied(grid.read(cell))) continue;
-				// A thing that arrived, however long ago, is no structure:
-				// its sides, first seen later, are arrivals too.
-				const CellEvent e = grid.event(cell);
-				if (e != CellEvent::Leaving && e != CellEvent::Appeared) return true;
+				if (cell != idx && standsStill(grid, cell)) return true;
 			}
 			x += n;
 		}
@@ -106,13 +112,11 @@ bool CMotionDetector::besideOccupied(
 		for (int x = w.x0; x <= w.x1; ++x)
 		{
 			const std::size_t cell = g.index(x, y);
-			if (cell == idx || !leansOccupied(grid.read(cell))) continue;
 			// Farther than the next cells, only what no beam ever crossed:
 			// a face seen at a grazing angle, whose spread lies along it.
 			const bool nearby = std::max(std::abs(x - cx), std::abs(y - cy)) <= near;
-			if (!nearby && !grid.neverSeenFree(cell)) continue;
-			const CellEvent e = grid.event(cell);
-			if (e != CellEvent::Leaving && e != CellEvent::Appeared) return true;
+			if (cell != idx && (nearby || grid.neverSeenFree(cell)) && standsStill(grid, cell))
+				return true;
 		}
 	return false;
 }
