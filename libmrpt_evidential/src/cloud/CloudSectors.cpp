@@ -24,43 +24,48 @@ constexpr std::uint32_t kDropped = 0xFFFFFFFFu, kAboveRobot = 0xFFFFFFFEu,
 /** What classify() needs of the rules, the plane and the poses. */
 struct TClassification
 {
-	double sensorX, sensorY, sensorZ;
+	float sensorX, sensorY, sensorZ;
 	/** The robot's rotation's first two rows: x and y in the world. */
-	double r00, r01, r02, r10, r11, r12;
-	TGroundPlane ground;
-	/** Obstacles lie between these heights above `ground` (+-inf without
+	float r00, r01, r02, r10, r11, r12;
+	/** The ground plane, z = a x + b y + c. */
+	float a = 0.0f, b = 0.0f, c = 0.0f;
+	/** Obstacles lie between these heights above the ground (+-inf without
 	 * ground removal). */
-	double minHeight, maxHeight;
+	float minHeight, maxHeight;
 	double sectorsPerRadian;
 	std::uint32_t sectors;
 };
 
 /** Each point's code and horizontal range, in one loop without branches
  * (it vectorizes; the scattering into sectors cannot). `xyz` holds n
- * points, three floats each. */
+ * points, three floats each. In float, as the points are: eight lanes at a
+ * time with AVX2, where double precision took four, for ranges within a
+ * part in 1e7 of the double's (the points' own precision). */
 MRPT_EVIDENTIAL_CPU_CLONES void classify(
 	const float* xyz, std::size_t n, const TClassification& k, std::uint32_t* codes,
 	double* ranges)
 {
+	constexpr float kNoReturn2 = static_cast<float>(kNoReturnDistance * kNoReturnDistance);
 	for (std::size_t i = 0; i < n; ++i)
 	{
-		const double x = xyz[3 * i], y = xyz[3 * i + 1], z = xyz[3 * i + 2];
-		const double dx0 = x - k.sensorX, dy0 = y - k.sensorY, dz0 = z - k.sensorZ;
-		// Not finite, or at the sensor (float coordinates cannot overflow
-		// the sum).
-		const double d2 = dx0 * dx0 + dy0 * dy0 + dz0 * dz0;
-		const bool dropped = !(d2 >= kNoReturnDistance * kNoReturnDistance && d2 <= DBL_MAX);
-		const double h = z - (k.ground.a * x + k.ground.b * y + k.ground.c);
+		const float x = xyz[3 * i], y = xyz[3 * i + 1], z = xyz[3 * i + 2];
+		const float dx0 = x - k.sensorX, dy0 = y - k.sensorY, dz0 = z - k.sensorZ;
+		// Not finite, or at the sensor. A point so far that its square
+		// overflows (1e19 m) counts as not finite.
+		const float d2 = dx0 * dx0 + dy0 * dy0 + dz0 * dz0;
+		const bool dropped = !(d2 >= kNoReturn2 && d2 <= FLT_MAX);
+		const float h = z - (k.a * x + k.b * y + k.c);
 		const bool above = h > k.maxHeight, ground = !(h >= k.minHeight);
-		const double dx = k.r00 * dx0 + k.r01 * dy0 + k.r02 * dz0;
-		const double dy = k.r10 * dx0 + k.r11 * dy0 + k.r12 * dz0;
+		const float dx = k.r00 * dx0 + k.r01 * dy0 + k.r02 * dz0;
+		const float dy = k.r10 * dx0 + k.r11 * dy0 + k.r12 * dz0;
 		// No hypot: its care for overflow costs more than the rest of the loop.
-		ranges[i] = std::sqrt(dx * dx + dy * dy);
+		ranges[i] = static_cast<double>(std::sqrt(dx * dx + dy * dy));
 		// Nearest sector centre; the last one wraps to the first. A point
 		// within 2e-6 rad of two sectors' border may go to either. The
 		// position is >= 0 (to fastAtan2's error): adding a half and
 		// truncating rounds it. A dropped point's NaN is never converted.
-		const double position = (detail::fastAtan2(dy, dx) + M_PI) * k.sectorsPerRadian + 0.5;
+		const double position =
+			(static_cast<double>(detail::fastAtan2(dy, dx)) + M_PI) * k.sectorsPerRadian + 0.5;
 		auto s = static_cast<std::uint32_t>(static_cast<std::int32_t>(dropped ? 0.0 : position));
 		s = s >= k.sectors ? s - k.sectors : s;
 		s = ground ? (s | kGround) : s;
@@ -90,17 +95,21 @@ TCloudCounts sortCloudIntoSectors(
 	{
 		TGroundFit fit;
 		fit.sensorZ = sensor.z;
-		// Else the robot's base plane (k.ground's default).
+		// Else the robot's base plane (z = 0).
 		if (const auto plane = fitGroundPlane(points, fit, scratch.columns))
-			k.ground = *plane, counts.planeFound = true;
+		{
+			k.a = static_cast<float>(plane->a), k.b = static_cast<float>(plane->b);
+			k.c = static_cast<float>(plane->c), counts.planeFound = true;
+		}
 	}
 	const bool removal = rules.groundRemoval != GroundRemoval::None;
-	k.minHeight = removal ? rules.minObstacleHeight : -HUGE_VAL;
-	k.maxHeight = removal ? rules.maxObstacleHeight : HUGE_VAL;
+	k.minHeight = removal ? static_cast<float>(rules.minObstacleHeight) : -HUGE_VALF;
+	k.maxHeight = removal ? static_cast<float>(rules.maxObstacleHeight) : HUGE_VALF;
 	const auto& R = robotPose.getRotationMatrix();
-	k.r00 = R(0, 0), k.r01 = R(0, 1), k.r02 = R(0, 2);
-	k.r10 = R(1, 0), k.r11 = R(1, 1), k.r12 = R(1, 2);
-	k.sensorX = sensor.x, k.sensorY = sensor.y, k.sensorZ = sensor.z;
+	const auto single = [](double v) { return static_cast<float>(v); };
+	k.r00 = single(R(0, 0)), k.r01 = single(R(0, 1)), k.r02 = single(R(0, 2));
+	k.r10 = single(R(1, 0)), k.r11 = single(R(1, 1)), k.r12 = single(R(1, 2));
+	k.sensorX = single(sensor.x), k.sensorY = single(sensor.y), k.sensorZ = single(sensor.z);
 	k.sectorsPerRadian = 1.0 / (2 * M_PI / static_cast<double>(sectors));
 	k.sectors = static_cast<std::uint32_t>(sectors);
 

@@ -10,7 +10,9 @@
 #include <mrpt/obs/CObservationVelodyneScan.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
+#include <mrpt_evidential/support/CpuClones.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -21,49 +23,51 @@ using namespace mrpt_evidential;
 
 namespace
 {
-/** Appends the points of a cloud given in the sensor's frame, in the
- * robot's. */
-template <typename Coordinates>
-void appendInRobotFrame(
-	const mrpt::poses::CPose3D& sensorPose, std::size_t n, Coordinates&& coordinate,
-	std::vector<mrpt::math::TPoint3Df>& out)
+/** Appends the n points (xs[i], ys[i], zs[i]) of a cloud given in the
+ * sensor's frame, in the robot's. Written in place, not appended one by one:
+ * the loop then vectorizes. */
+MRPT_EVIDENTIAL_CPU_CLONES void appendInRobotFrame(
+	const mrpt::poses::CPose3D& sensorPose, std::size_t n, const float* xs, const float* ys,
+	const float* zs, std::vector<mrpt::math::TPoint3Df>& out)
 {
-	out.reserve(out.size() + n);
 	// The pose's rotation and translation once, not a library call a point.
 	const auto& R = sensorPose.getRotationMatrix();
 	const double r00 = R(0, 0), r01 = R(0, 1), r02 = R(0, 2), r10 = R(1, 0), r11 = R(1, 1),
 				 r12 = R(1, 2), r20 = R(2, 0), r21 = R(2, 1), r22 = R(2, 2);
 	const double tx = sensorPose.x(), ty = sensorPose.y(), tz = sensorPose.z();
+	if (n == 0) return;
+	const std::size_t first = out.size();
+	out.resize(first + n);
+	float* to = &out[first].x;
+	static_assert(sizeof(mrpt::math::TPoint3Df) == 3 * sizeof(float), "packed points");
 	for (std::size_t i = 0; i < n; ++i)
 	{
-		const mrpt::math::TPoint3Df p = coordinate(i);
-		const double x = p.x, y = p.y, z = p.z;
-		out.emplace_back(
-			static_cast<float>(tx + r00 * x + r01 * y + r02 * z),
-			static_cast<float>(ty + r10 * x + r11 * y + r12 * z),
-			static_cast<float>(tz + r20 * x + r21 * y + r22 * z));
+		const double x = xs[i], y = ys[i], z = zs[i];
+		to[3 * i] = static_cast<float>(tx + r00 * x + r01 * y + r02 * z);
+		to[3 * i + 1] = static_cast<float>(ty + r10 * x + r11 * y + r12 * z);
+		to[3 * i + 2] = static_cast<float>(tz + r20 * x + r21 * y + r22 * z);
 	}
+}
+
+/** The points of a cloud held as three coordinate arrays; a cloud whose
+ * arrays differ in length (a corrupted file) gives the points all three
+ * hold. */
+template <typename Coordinates>
+void pointsOf(
+	const Coordinates& xs, const Coordinates& ys, const Coordinates& zs,
+	const mrpt::poses::CPose3D& sensorPose, std::vector<mrpt::math::TPoint3Df>& out)
+{
+	const std::size_t n = std::min({xs.size(), ys.size(), zs.size()});
+	appendInRobotFrame(sensorPose, n, xs.data(), ys.data(), zs.data(), out);
 }
 
 void pointsOf(
 	const mrpt::maps::CPointsMap& cloud, const mrpt::poses::CPose3D& sensorPose,
 	std::vector<mrpt::math::TPoint3Df>& out)
 {
-	const auto& xs = cloud.getPointsBufferRef_x();
-	const auto& ys = cloud.getPointsBufferRef_y();
-	const auto& zs = cloud.getPointsBufferRef_z();
-	appendInRobotFrame(sensorPose, cloud.size(), [&](std::size_t i) {
-		return mrpt::math::TPoint3Df(xs[i], ys[i], zs[i]);
-	}, out);
-}
-
-void pointsOf(
-	const mrpt::obs::CObservationVelodyneScan::TPointCloud& cloud,
-	const mrpt::poses::CPose3D& sensorPose, std::vector<mrpt::math::TPoint3Df>& out)
-{
-	appendInRobotFrame(sensorPose, cloud.size(), [&](std::size_t i) {
-		return mrpt::math::TPoint3Df(cloud.x[i], cloud.y[i], cloud.z[i]);
-	}, out);
+	pointsOf(
+		cloud.getPointsBufferRef_x(), cloud.getPointsBufferRef_y(), cloud.getPointsBufferRef_z(),
+		sensorPose, out);
 }
 }  // namespace
 
@@ -79,14 +83,16 @@ std::optional<mrpt::poses::CPose3D> CEvidentialGridMap2D::cloudInRobotFrame(
 	if (const auto* o = dynamic_cast<const mrpt::obs::CObservationVelodyneScan*>(&obs))
 	{
 		if (o->point_cloud.size() > 0 || o->scan_packets.empty())
-			pointsOf(o->point_cloud, o->sensorPose, points);
+			pointsOf(o->point_cloud.x, o->point_cloud.y, o->point_cloud.z, o->sensorPose, points);
 		else
 		{
 			// Raw packets only: decode them with the scan's calibration, on
 			// a copy (decoding writes the observation).
 			mrpt::obs::CObservationVelodyneScan decoded(*o);
 			decoded.generatePointCloud();
-			pointsOf(decoded.point_cloud, o->sensorPose, points);
+			pointsOf(
+				decoded.point_cloud.x, decoded.point_cloud.y, decoded.point_cloud.z, o->sensorPose,
+				points);
 		}
 		return o->sensorPose;
 	}
@@ -103,9 +109,7 @@ std::optional<mrpt::poses::CPose3D> CEvidentialGridMap2D::cloudInRobotFrame(
 			pointsOf(cloud, o->sensorPose, points);
 		}
 		else if (o->hasPoints3D)
-			appendInRobotFrame(o->sensorPose, o->points3D_x.size(), [&](std::size_t i) {
-				return mrpt::math::TPoint3Df(o->points3D_x[i], o->points3D_y[i], o->points3D_z[i]);
-			}, points);
+			pointsOf(o->points3D_x, o->points3D_y, o->points3D_z, o->sensorPose, points);
 		return o->sensorPose;
 	}
 	return std::nullopt;

@@ -5,7 +5,10 @@
 
 #include "scan/SectorRow.h"
 
+#include <mrpt_evidential/support/CpuClones.h>
+
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -57,21 +60,88 @@ struct Band
 	std::size_t own;  //!< the bin holding the impact (nBins: beyond the grid)
 };
 
-Band occupiedBand(
-	const SensorModelParams& p, double r, double binSize, std::size_t nBins)
+/** The bands of up to kBandChunk impacts, as whole numbers in doubles. */
+constexpr std::size_t kBandChunk = 64;
+struct TBandChunk
 {
-	const std::size_t own = detail::binOf(r, binSize, nBins);
-	if (p.model != SensorModel::ImpreciseMultiEcho || p.imprecision == 0.0 ||
-		!std::isfinite(r))
-		return {own, own, own};
+	double first[kBandChunk], last[kBandChunk], own[kBandChunk];
+	Band operator[](std::size_t i) const
+	{
+		return {static_cast<std::size_t>(first[i]), static_cast<std::size_t>(last[i]),
+				static_cast<std::size_t>(own[i])};
+	}
+};
+
+/** Whether an impact's occupied evidence spreads beyond its own bin. */
+bool spreads(const SensorModelParams& p)
+{
+	return p.model == SensorModel::ImpreciseMultiEcho && p.imprecision != 0.0;
+}
+
+/** Band i of `out`: the impact at range r (>= 0 or +inf), without branches;
+ * `spread`: the imprecise model's band of +-d, else the own bin alone. */
+template <bool Spread>
+inline void bandInto(
+	double d, double r, double binSize, std::size_t nBins, TBandChunk& out, std::size_t i)
+{
 	const double maxIndex = static_cast<double>(nBins);
-	const double lo = std::ceil((r - p.imprecision) / binSize - 0.5);
-	const double hi = std::floor((r + p.imprecision) / binSize - 0.5);
-	const auto clampIndex = [&](double i) {
-		return static_cast<std::size_t>(std::clamp(i, 0.0, maxIndex));
-	};
-	if (hi < lo) return {own, own, own};
-	return {std::min(own, clampIndex(lo)), std::max(own, clampIndex(hi)), own};
+	// detail::binOf(), in a double.
+	const double x = r / binSize + 1e-9;
+	const double own = x < maxIndex ? std::trunc(x) : maxIndex;
+	out.own[i] = own;
+	if constexpr (!Spread)
+	{
+		out.first[i] = out.last[i] = own;
+		return;
+	}
+	const double lo = std::ceil((r - d) / binSize - 0.5);
+	const double hi = std::floor((r + d) / binSize - 0.5);
+	// +inf (no return) has no band but its own bin.
+	const bool banded = (r <= DBL_MAX) & (hi >= lo);
+	const double loIndex = std::min(std::max(lo, 0.0), maxIndex);
+	const double hiIndex = std::min(std::max(hi, 0.0), maxIndex);
+	out.first[i] = banded ? std::min(own, loIndex) : own;
+	out.last[i] = banded ? std::max(own, hiIndex) : own;
+}
+
+template <bool Spread>
+void bandsOneByOne(
+	double d, const double* ranges, std::size_t n, double binSize, std::size_t nBins,
+	TBandChunk& out)
+{
+	for (std::size_t i = 0; i < n; ++i) bandInto<Spread>(d, ranges[i], binSize, nBins, out, i);
+}
+
+/** The imprecise model's bands of n <= kBandChunk impacts in one loop that
+ * vectorizes: a cloud's sector holds dozens, each of which waited on its
+ * three divisions (a tenth of a cloud's insertion). */
+MRPT_EVIDENTIAL_CPU_CLONES void spreadBands(
+	double d, const double* ranges, std::size_t n, double binSize, std::size_t nBins,
+	TBandChunk& out)
+{
+	bandsOneByOne<true>(d, ranges, n, binSize, nBins, out);
+}
+
+/** The bands of ranges [0, n), n <= kBandChunk. A few impacts (a 2-D scan's
+ * sector holds one) are not worth a call to the vector copy. */
+void occupiedBands(
+	const SensorModelParams& p, const double* ranges, std::size_t n, double binSize,
+	std::size_t nBins, TBandChunk& out)
+{
+	if (!spreads(p))
+		bandsOneByOne<false>(p.imprecision, ranges, n, binSize, nBins, out);
+	else if (n >= 8)
+		spreadBands(p.imprecision, ranges, n, binSize, nBins, out);
+	else
+		bandsOneByOne<true>(p.imprecision, ranges, n, binSize, nBins, out);
+}
+
+/** The band of one impact. */
+Band occupiedBand(const SensorModelParams& p, double r, double binSize, std::size_t nBins)
+{
+	TBandChunk chunk;
+	occupiedBands(p, &r, 1, binSize, nBins, chunk);
+	return chunk[0];
 }
 
 /** Profile weight g of bin b for an impact at range r (g = 1 at the impact's
@@ -95,7 +165,7 @@ namespace detail
 TSectorLayout appendSectorRow(
 	const SensorModelParams& params, const double* sortedRanges,
 	std::size_t nImpacts, double binSize, std::size_t nBins,
-	std::vector<TBinRun>& runs, std::vector<Mass>& masses)
+	std::vector<TBinRun>& runs, std::vector<Mass>& masses, bool oneBeamFree)
 {
 	TSectorLayout layout;
 	layout.firstRun = runs.size();
@@ -106,9 +176,14 @@ TSectorLayout appendSectorRow(
 	// than one more run to look through).
 	constexpr std::size_t kJoinGap = 8;
 	std::size_t firstOccupied = nBins;
+	TBandChunk bands;
 	for (std::size_t i = 0; i < nImpacts; ++i)
 	{
-		const Band band = occupiedBand(params, sortedRanges[i], binSize, nBins);
+		if (i % kBandChunk == 0)
+			occupiedBands(
+				params, sortedRanges + i, std::min(kBandChunk, nImpacts - i), binSize, nBins,
+				bands);
+		const Band band = bands[i % kBandChunk];
 		firstOccupied = std::min(firstOccupied, band.first);
 		if (band.first >= nBins) break;
 		const std::size_t end = std::min(band.last + 1, nBins);
@@ -120,7 +195,10 @@ TSectorLayout appendSectorRow(
 		}
 		else
 		{
-			runs.push_back({band.first, end, masses.size()});
+			// Field by field: a run built whole on the stack was read back in
+			// one 16-byte load from two 8-byte stores, a stall per sector.
+			TBinRun& run = runs.emplace_back();
+			run.begin = band.first, run.end = end, run.offset = masses.size();
 			for (std::size_t b = band.first; b < end; ++b)
 				masses.push_back(Mass::vacuous());
 		}
@@ -143,9 +221,10 @@ TSectorLayout appendSectorRow(
 			masses[i].occupied = 1.0 - masses[i].unknown;
 
 	layout.freeBins = firstOccupied;
-	// Every beam crossed the bins before the nearest band.
+	// Every beam crossed the bins before the nearest band; a cloud's layers
+	// are one beam's proof (`oneBeamFree`).
 	if (firstOccupied > 0)
-		layout.freeMass = params.model == SensorModel::MultiEcho || nImpacts == 1
+		layout.freeMass = params.model == SensorModel::MultiEcho || nImpacts == 1 || oneBeamFree
 			? params.muF
 			: 1.0 - std::pow(1.0 - params.muF, static_cast<double>(nImpacts));
 	layout.informedBins =
