@@ -31,7 +31,8 @@ struct TCloudCounts
 {
 	/** Points that were finite and away from the sensor. */
 	std::size_t used = 0;
-	/** NaN or infinite coordinates, or within 1 cm of the sensor (where
+	/** NaN or infinite coordinates, so far (1e19 m) that the squared
+	 * distance overflows a float, or within 1 cm of the sensor (where
 	 * drivers put returns they did not get). */
 	std::size_t dropped = 0;
 	std::size_t ground = 0, obstacles = 0, aboveRobot = 0;

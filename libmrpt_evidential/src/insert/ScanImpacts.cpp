@@ -11,26 +11,32 @@ namespace mrpt_evidential
 {
 namespace
 {
-/** Where up to kChunk impacts of one sector lie: each one's bin, and its
- * grid column and row (floors, in doubles). */
+/** Where an impact lies: its bin, and its grid column and row (floors, in
+ * doubles, so that loops over many vectorize). */
+struct TPlace
+{
+	double bin, column, row;
+};
+
+/** The place of the impact at range r along direction (c, s) from the
+ * sensor, without branches. */
+inline TPlace placeOf(
+	double r, double c, double s, const PlanarSensorPose& sensor, const GridGeometry& grid,
+	double binSize, double bins)
+{
+	// detail::binOf(), in a double.
+	const double x = r / binSize + 1e-9;
+	return {x < bins ? std::trunc(x) : bins,
+			std::floor((sensor.x + r * c - grid.xMin) / grid.resolution),
+			std::floor((sensor.y + r * s - grid.yMin) / grid.resolution)};
+}
+
+/** The places of up to kChunk impacts of one sector. */
 constexpr std::size_t kChunk = 64;
 struct TPlaces
 {
 	double bin[kChunk], column[kChunk], row[kChunk];
 };
-
-/** Place i of `out`: the impact at range r along direction (c, s) from the
- * sensor, without branches. */
-inline void placeInto(
-	double r, double c, double s, const PlanarSensorPose& sensor, const GridGeometry& grid,
-	double binSize, std::size_t binCount, TPlaces& out, std::size_t i)
-{
-	// detail::binOf(), in a double.
-	const double x = r / binSize + 1e-9, bins = static_cast<double>(binCount);
-	out.bin[i] = x < bins ? std::trunc(x) : bins;
-	out.column[i] = std::floor((sensor.x + r * c - grid.xMin) / grid.resolution);
-	out.row[i] = std::floor((sensor.y + r * s - grid.yMin) / grid.resolution);
-}
 
 /** The places of n <= kChunk impacts in one loop that vectorizes: a cloud's
  * thousands of impacts, three divisions each. */
@@ -38,21 +44,12 @@ MRPT_EVIDENTIAL_CPU_CLONES void placesInto(
 	const double* ranges, std::size_t n, double c, double s, const PlanarSensorPose& sensor,
 	const GridGeometry& grid, double binSize, std::size_t binCount, TPlaces& out)
 {
+	const auto bins = static_cast<double>(binCount);
 	for (std::size_t i = 0; i < n; ++i)
-		placeInto(ranges[i], c, s, sensor, grid, binSize, binCount, out, i);
-}
-
-/** The places of ranges [0, n), n <= kChunk: a few impacts (a 2-D scan's
- * sector holds one) are not worth a call to the vector copy. */
-void placeImpacts(
-	const double* ranges, std::size_t n, double c, double s, const PlanarSensorPose& sensor,
-	const GridGeometry& grid, double binSize, std::size_t binCount, TPlaces& out)
-{
-	if (n >= 8)
-		placesInto(ranges, n, c, s, sensor, grid, binSize, binCount, out);
-	else
-		for (std::size_t i = 0; i < n; ++i)
-			placeInto(ranges[i], c, s, sensor, grid, binSize, binCount, out, i);
+	{
+		const TPlace p = placeOf(ranges[i], c, s, sensor, grid, binSize, bins);
+		out.bin[i] = p.bin, out.column[i] = p.column, out.row[i] = p.row;
+	}
 }
 }  // namespace
 
@@ -68,21 +65,26 @@ void CScanImpacts::build(
 	for (std::size_t s = 0; s < polar.sectorCount(); ++s)
 	{
 		const std::vector<double>& ranges = polar.impacts(s);
-		// Sorted: the impacts within reach come first.
-		const auto inReach = static_cast<std::size_t>(
-			std::lower_bound(ranges.begin(), ranges.end(), reach) - ranges.begin());
+		if (ranges.empty() || !(ranges.front() < reach)) continue;
 		const auto [c, sn] = transform.sectorDirection(s);
-		for (std::size_t i = 0; i < inReach; ++i)
+		// A sector of many impacts (a cloud's) has them placed in chunks by
+		// the vector code; a few (a 2-D scan's one) are not worth the call.
+		const bool chunked = ranges.size() >= 8;
+		for (std::size_t i = 0; i < ranges.size(); ++i)
 		{
+			if (!(ranges[i] < reach)) break;  // sorted: the rest lie beyond too
 			const std::size_t k = i % kChunk;
-			if (k == 0)
-				placeImpacts(
-					ranges.data() + i, std::min(kChunk, inReach - i), c, sn, sensor, grid,
+			if (chunked && k == 0)
+				placesInto(
+					ranges.data() + i, std::min(kChunk, ranges.size() - i), c, sn, sensor, grid,
 					polar.binSize(), polar.binCount(), places);
-			const double occupied =
-				polar.massAt(s, static_cast<std::size_t>(places.bin[k])).occupied;
+			const TPlace place = chunked
+				? TPlace{places.bin[k], places.column[k], places.row[k]}
+				: placeOf(ranges[i], c, sn, sensor, grid, polar.binSize(),
+						  static_cast<double>(polar.binCount()));
+			const double occupied = polar.massAt(s, static_cast<std::size_t>(place.bin)).occupied;
 			if (!(occupied > 0.0)) continue;
-			const double fx = places.column[k], fy = places.row[k];
+			const double fx = place.column, fy = place.row;
 			if (!(fx >= 0 && fy >= 0 && fx < grid.sizeX && fy < grid.sizeY)) continue;
 			const std::size_t idx = grid.index(static_cast<int>(fx), static_cast<int>(fy));
 			// A sector's impacts in one cell (a cloud's layers on one wall)

@@ -60,7 +60,48 @@ struct Band
 	std::size_t own;  //!< the bin holding the impact (nBins: beyond the grid)
 };
 
-/** The bands of up to kBandChunk impacts, as whole numbers in doubles. */
+/** Whether an impact's occupied evidence spreads beyond its own bin. */
+bool spreads(const SensorModelParams& p)
+{
+	return p.model == SensorModel::ImpreciseMultiEcho && p.imprecision != 0.0;
+}
+
+/** A band's bins as whole numbers in doubles: loops over many vectorize. */
+struct TBandBins
+{
+	double first, last, own;
+};
+
+/** The band of the impact at range r (>= 0 or +inf), without branches;
+ * `Spread`: the imprecise model's bins within d, else the own bin alone. */
+template <bool Spread>
+inline TBandBins bandBins(double d, double r, double binSize, double maxIndex)
+{
+	// detail::binOf(), in a double.
+	const double x = r / binSize + 1e-9;
+	const double own = x < maxIndex ? std::trunc(x) : maxIndex;
+	if constexpr (!Spread) return {own, own, own};
+	const double lo = std::ceil((r - d) / binSize - 0.5);
+	const double hi = std::floor((r + d) / binSize - 0.5);
+	// +inf (no return) has no band but its own bin.
+	const bool banded = (r <= DBL_MAX) & (hi >= lo);
+	const double loIndex = std::min(std::max(lo, 0.0), maxIndex);
+	const double hiIndex = std::min(std::max(hi, 0.0), maxIndex);
+	return {banded ? std::min(own, loIndex) : own, banded ? std::max(own, hiIndex) : own, own};
+}
+
+/** The band of one impact, as above; `spread`: spreads(p). */
+inline Band occupiedBand(
+	const SensorModelParams& p, bool spread, double r, double binSize, std::size_t nBins)
+{
+	const auto maxIndex = static_cast<double>(nBins);
+	const TBandBins b = spread ? bandBins<true>(p.imprecision, r, binSize, maxIndex)
+							   : bandBins<false>(p.imprecision, r, binSize, maxIndex);
+	return {static_cast<std::size_t>(b.first), static_cast<std::size_t>(b.last),
+			static_cast<std::size_t>(b.own)};
+}
+
+/** The imprecise model's bands of up to kBandChunk impacts. */
 constexpr std::size_t kBandChunk = 64;
 struct TBandChunk
 {
@@ -72,46 +113,6 @@ struct TBandChunk
 	}
 };
 
-/** Whether an impact's occupied evidence spreads beyond its own bin. */
-bool spreads(const SensorModelParams& p)
-{
-	return p.model == SensorModel::ImpreciseMultiEcho && p.imprecision != 0.0;
-}
-
-/** Band i of `out`: the impact at range r (>= 0 or +inf), without branches;
- * `spread`: the imprecise model's band of +-d, else the own bin alone. */
-template <bool Spread>
-inline void bandInto(
-	double d, double r, double binSize, std::size_t nBins, TBandChunk& out, std::size_t i)
-{
-	const double maxIndex = static_cast<double>(nBins);
-	// detail::binOf(), in a double.
-	const double x = r / binSize + 1e-9;
-	const double own = x < maxIndex ? std::trunc(x) : maxIndex;
-	out.own[i] = own;
-	if constexpr (!Spread)
-	{
-		out.first[i] = out.last[i] = own;
-		return;
-	}
-	const double lo = std::ceil((r - d) / binSize - 0.5);
-	const double hi = std::floor((r + d) / binSize - 0.5);
-	// +inf (no return) has no band but its own bin.
-	const bool banded = (r <= DBL_MAX) & (hi >= lo);
-	const double loIndex = std::min(std::max(lo, 0.0), maxIndex);
-	const double hiIndex = std::min(std::max(hi, 0.0), maxIndex);
-	out.first[i] = banded ? std::min(own, loIndex) : own;
-	out.last[i] = banded ? std::max(own, hiIndex) : own;
-}
-
-template <bool Spread>
-void bandsOneByOne(
-	double d, const double* ranges, std::size_t n, double binSize, std::size_t nBins,
-	TBandChunk& out)
-{
-	for (std::size_t i = 0; i < n; ++i) bandInto<Spread>(d, ranges[i], binSize, nBins, out, i);
-}
-
 /** The imprecise model's bands of n <= kBandChunk impacts in one loop that
  * vectorizes: a cloud's sector holds dozens, each of which waited on its
  * three divisions (a tenth of a cloud's insertion). */
@@ -119,29 +120,12 @@ MRPT_EVIDENTIAL_CPU_CLONES void spreadBands(
 	double d, const double* ranges, std::size_t n, double binSize, std::size_t nBins,
 	TBandChunk& out)
 {
-	bandsOneByOne<true>(d, ranges, n, binSize, nBins, out);
-}
-
-/** The bands of ranges [0, n), n <= kBandChunk. A few impacts (a 2-D scan's
- * sector holds one) are not worth a call to the vector copy. */
-void occupiedBands(
-	const SensorModelParams& p, const double* ranges, std::size_t n, double binSize,
-	std::size_t nBins, TBandChunk& out)
-{
-	if (!spreads(p))
-		bandsOneByOne<false>(p.imprecision, ranges, n, binSize, nBins, out);
-	else if (n >= 8)
-		spreadBands(p.imprecision, ranges, n, binSize, nBins, out);
-	else
-		bandsOneByOne<true>(p.imprecision, ranges, n, binSize, nBins, out);
-}
-
-/** The band of one impact. */
-Band occupiedBand(const SensorModelParams& p, double r, double binSize, std::size_t nBins)
-{
-	TBandChunk chunk;
-	occupiedBands(p, &r, 1, binSize, nBins, chunk);
-	return chunk[0];
+	const auto maxIndex = static_cast<double>(nBins);
+	for (std::size_t i = 0; i < n; ++i)
+	{
+		const TBandBins b = bandBins<true>(d, ranges[i], binSize, maxIndex);
+		out.first[i] = b.first, out.last[i] = b.last, out.own[i] = b.own;
+	}
 }
 
 /** Profile weight g of bin b for an impact at range r (g = 1 at the impact's
@@ -176,14 +160,19 @@ TSectorLayout appendSectorRow(
 	// than one more run to look through).
 	constexpr std::size_t kJoinGap = 8;
 	std::size_t firstOccupied = nBins;
+	// A sector of many impacts (a cloud's) has their bands worked out in
+	// chunks by the vector code; a few (a 2-D scan's one) are not worth the
+	// call.
+	const bool spread = spreads(params), chunked = spread && nImpacts >= 8;
 	TBandChunk bands;
 	for (std::size_t i = 0; i < nImpacts; ++i)
 	{
-		if (i % kBandChunk == 0)
-			occupiedBands(
-				params, sortedRanges + i, std::min(kBandChunk, nImpacts - i), binSize, nBins,
-				bands);
-		const Band band = bands[i % kBandChunk];
+		if (chunked && i % kBandChunk == 0)
+			spreadBands(
+				params.imprecision, sortedRanges + i, std::min(kBandChunk, nImpacts - i),
+				binSize, nBins, bands);
+		const Band band = chunked ? bands[i % kBandChunk]
+								  : occupiedBand(params, spread, sortedRanges[i], binSize, nBins);
 		firstOccupied = std::min(firstOccupied, band.first);
 		if (band.first >= nBins) break;
 		const std::size_t end = std::min(band.last + 1, nBins);
@@ -267,7 +256,7 @@ std::vector<Mass> sectorMassesByCombination(
 	const Mass maskBehind{0.0, 0.0, 1.0, 0.0};
 	for (const double r : impactRanges)
 	{
-		const Band band = occupiedBand(params, r, binSize, nBins);
+		const Band band = occupiedBand(params, spreads(params), r, binSize, nBins);
 		for (std::size_t b = 0; b < nBins; ++b)
 		{
 			Mass impact = Mass::vacuous();
