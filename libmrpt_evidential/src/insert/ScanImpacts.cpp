@@ -2,6 +2,8 @@
 
 #include "insert/ScanImpacts.h"
 
+#include "scan/SectorRow.h"
+
 #include <mrpt_evidential/support/CpuClones.h>
 
 #include <algorithm>
@@ -24,9 +26,7 @@ inline TPlace placeOf(
 	double r, double c, double s, const PlanarSensorPose& sensor, const GridGeometry& grid,
 	double binSize, double bins)
 {
-	// detail::binOf(), in a double.
-	const double x = r / binSize + 1e-9;
-	return {x < bins ? std::trunc(x) : bins,
+	return {detail::binOfInDouble(r, binSize, bins),
 			std::floor((sensor.x + r * c - grid.xMin) / grid.resolution),
 			std::floor((sensor.y + r * s - grid.yMin) / grid.resolution)};
 }
