@@ -198,6 +198,16 @@ TEST(SectorModels, EdgeCasesOfImpacts)
 	}
 }
 
+TEST(SectorModels, RangeBinCountsEdgesInTheUpperBin)
+{
+	// 4.0 / 0.05 is 79.99999999999999 in binary: 4 m starts bin 80.
+	EXPECT_EQ(rangeBin(4.0, 0.05, 1000.0), 80.0);
+	EXPECT_EQ(rangeBin(0.0, 0.05, 1000.0), 0.0);
+	EXPECT_EQ(rangeBin(0.0749, 0.05, 1000.0), 1.0);
+	// Beyond the last bin, +inf and huge ranges included: nBins.
+	for (const double r : {50.0, 1e300, kInf}) EXPECT_EQ(rangeBin(r, 0.05, 1000.0), 1000.0);
+}
+
 TEST(SectorModels, RejectsInvalidArguments)
 {
 	const SensorModelParams p = params(SensorModel::ReinforcedMultiEcho, 0.7, 0.9);

@@ -2,8 +2,7 @@
 
 #include "insert/ScanImpacts.h"
 
-#include "scan/SectorRow.h"
-
+#include <mrpt_evidential/scan/SensorModel.h>
 #include <mrpt_evidential/support/CpuClones.h>
 
 #include <algorithm>
@@ -26,7 +25,7 @@ inline TPlace placeOf(
 	double r, double c, double s, const PlanarSensorPose& sensor, const GridGeometry& grid,
 	double binSize, double bins)
 {
-	return {detail::binOfInDouble(r, binSize, bins),
+	return {rangeBin(r, binSize, bins),
 			std::floor((sensor.x + r * c - grid.xMin) / grid.resolution),
 			std::floor((sensor.y + r * s - grid.yMin) / grid.resolution)};
 }

@@ -77,7 +77,7 @@ struct TBandBins
 template <bool Spread>
 inline TBandBins bandBins(double d, double r, double binSize, double maxIndex)
 {
-	const double own = detail::binOfInDouble(r, binSize, maxIndex);
+	const double own = rangeBin(r, binSize, maxIndex);
 	if constexpr (!Spread) return {own, own, own};
 	const double lo = std::ceil((r - d) / binSize - 0.5);
 	const double hi = std::floor((r + d) / binSize - 0.5);

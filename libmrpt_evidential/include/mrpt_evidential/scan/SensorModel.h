@@ -6,6 +6,7 @@
 #include <mrpt_evidential/TInvalidOption.h>
 #include <mrpt_evidential/algebra/Mass.h>
 
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -106,5 +107,18 @@ std::vector<Mass> sectorMasses(
 std::vector<Mass> sectorMassesByCombination(
 	const SensorModelParams& params, const std::vector<double>& impactRanges,
 	double binSize, std::size_t nBins);
+
+/** The bin of a row of nBins bins of binSize (sectorMasses()) that holds
+ * range r >= 0, as a whole number in a double (loops over many ranges then
+ * vectorize): floor(r / binSize), a range within a billionth of a bin below
+ * an edge counting in the upper bin (4.0 / 0.05 is 79.99999999999999 in
+ * binary, yet 4 m lies in the bin that starts at 4 m); nBins when r lies
+ * beyond the last bin, +inf included (compared as doubles, so that huge
+ * ranges never overflow a conversion). Never throws. */
+inline double rangeBin(double r, double binSize, double nBins)
+{
+	const double x = r / binSize + 1e-9;
+	return x < nBins ? std::trunc(x) : nBins;
+}
 
 }  // namespace mrpt_evidential
