@@ -30,8 +30,10 @@ inline TPlace placeOf(
 			std::floor((sensor.y + r * s - grid.yMin) / grid.resolution)};
 }
 
-/** The places of up to kChunk impacts of one sector. */
-constexpr std::size_t kChunk = 64;
+/** The places of up to kChunk impacts of one sector, for sectors of
+ * kChunkFrom impacts or more (fewer are not worth a call to the vector
+ * copy). */
+constexpr std::size_t kChunk = 64, kChunkFrom = 8;
 struct TPlaces
 {
 	double bin[kChunk], column[kChunk], row[kChunk];
@@ -68,7 +70,7 @@ void CScanImpacts::build(
 		const auto [c, sn] = transform.sectorDirection(s);
 		// A sector of many impacts (a cloud's) has them placed in chunks by
 		// the vector code; a few (a 2-D scan's one) are not worth the call.
-		const bool chunked = ranges.size() >= 8;
+		const bool chunked = ranges.size() >= kChunkFrom;
 		for (std::size_t i = 0; i < ranges.size(); ++i)
 		{
 			if (!(ranges[i] < reach)) break;  // sorted: the rest lie beyond too

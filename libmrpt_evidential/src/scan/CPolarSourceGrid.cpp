@@ -199,14 +199,18 @@ void CPolarSourceGrid::buildRows(const TSourceGridOptions& options, bool nearest
 		TSectorLayout& layout = m_layouts[s];
 		layout = detail::appendSectorRow(
 			options.sensorModel, impacts.data(), impacts.size(), m_binSize,
-			m_binCount, m_runs, m_masses, nearestRunOnly);
+			m_binCount, m_runs, m_masses, !nearestRunOnly);
 		if (impacts.empty() && m_freeReach[s] > 0.0)
 		{
-			// Only ground returns: the space they crossed, one beam's proof.
+			// Only ground returns: the space they crossed.
 			layout.freeBins = binOfRange(m_freeReach[s]);
-			layout.freeMass = layout.freeBins > 0 ? options.sensorModel.muF : 0.0;
 			layout.informedBins = layout.freeBins;
 		}
+		// A cloud's layers cross the cells before its nearest impact at
+		// other heights, most of them above or below the obstacles': one
+		// beam's proof, whatever the model (and one free mass for the
+		// whole turn, which the transform fuses as runs).
+		if (nearestRunOnly) layout.freeMass = layout.freeBins > 0 ? options.sensorModel.muF : 0.0;
 		m_maxInformedBins = std::max(m_maxInformedBins, layout.informedBins);
 		m_transformBins[s] = nearestRunOnly && layout.runCount > 0
 			? m_runs[layout.firstRun].end

@@ -21,11 +21,11 @@ inline std::size_t binOf(double r, double binSize, std::size_t nBins)
  * count and one mass, and the bins past them that may hold evidence as runs
  * appended to `runs` (offsets into `masses`, where their masses are
  * appended). Bins outside the runs are vacuous. The free bins hold muF
- * reinforced once per impact (the beams that crossed them), or muF alone
- * with `oneBeamFree` (a cloud: its layers cross the cells before the nearest
- * impact at other heights, most of them above or below the obstacles'). */
+ * reinforced once per impact (the beams that crossed them); without
+ * `freeMassToo` the layout's free mass is left at 0 for the caller to set
+ * (CPolarSourceGrid gives a cloud's turn one free mass). */
 TSectorLayout appendSectorRow(
 	const SensorModelParams& params, const double* sortedRanges,
 	std::size_t nImpacts, double binSize, std::size_t nBins,
-	std::vector<TBinRun>& runs, std::vector<Mass>& masses, bool oneBeamFree = false);
+	std::vector<TBinRun>& runs, std::vector<Mass>& masses, bool freeMassToo = true);
 }  // namespace mrpt_evidential::detail

@@ -99,8 +99,10 @@ inline Band occupiedBand(
 			static_cast<std::size_t>(b.own)};
 }
 
-/** The imprecise model's bands of up to kBandChunk impacts. */
-constexpr std::size_t kBandChunk = 64;
+/** The imprecise model's bands of up to kBandChunk impacts, for sectors of
+ * kChunkFrom impacts or more (fewer are not worth a call to the vector
+ * copy). */
+constexpr std::size_t kBandChunk = 64, kChunkFrom = 8;
 struct TBandChunk
 {
 	double first[kBandChunk], last[kBandChunk], own[kBandChunk];
@@ -147,7 +149,7 @@ namespace detail
 TSectorLayout appendSectorRow(
 	const SensorModelParams& params, const double* sortedRanges,
 	std::size_t nImpacts, double binSize, std::size_t nBins,
-	std::vector<TBinRun>& runs, std::vector<Mass>& masses, bool oneBeamFree)
+	std::vector<TBinRun>& runs, std::vector<Mass>& masses, bool freeMassToo)
 {
 	TSectorLayout layout;
 	layout.firstRun = runs.size();
@@ -161,7 +163,7 @@ TSectorLayout appendSectorRow(
 	// A sector of many impacts (a cloud's) has their bands worked out in
 	// chunks by the vector code; a few (a 2-D scan's one) are not worth the
 	// call.
-	const bool spread = spreads(params), chunked = spread && nImpacts >= 8;
+	const bool spread = spreads(params), chunked = spread && nImpacts >= kChunkFrom;
 	TBandChunk bands;
 	for (std::size_t i = 0; i < nImpacts; ++i)
 	{
@@ -208,10 +210,9 @@ TSectorLayout appendSectorRow(
 			masses[i].occupied = 1.0 - masses[i].unknown;
 
 	layout.freeBins = firstOccupied;
-	// Every beam crossed the bins before the nearest band; a cloud's layers
-	// are one beam's proof (`oneBeamFree`).
-	if (firstOccupied > 0)
-		layout.freeMass = params.model == SensorModel::MultiEcho || nImpacts == 1 || oneBeamFree
+	// Every beam crossed the bins before the nearest band.
+	if (firstOccupied > 0 && freeMassToo)
+		layout.freeMass = params.model == SensorModel::MultiEcho || nImpacts == 1
 			? params.muF
 			: 1.0 - std::pow(1.0 - params.muF, static_cast<double>(nImpacts));
 	layout.informedBins =
