@@ -84,10 +84,10 @@ TFused fuseFree(__m128 f, __m128 o, __m128 w)
 		}
 		return {nf, no, _mm_setzero_ps()};
 	}
-	const __m128 newConflict = _mm_div_ps(_mm_mul_ps(o, w), scale);
+	const __m128 lost = _mm_mul_ps(o, w), newConflict = _mm_div_ps(lost, scale);
 	// At total conflict both products are 0 and n becomes vacuous.
 	const __m128 normalize = Rule == FreeFusion::Dempster
-		? _mm_div_ps(one, _mm_max_ps(_mm_sub_ps(one, newConflict), _mm_set1_ps(1e-30f)))
+		? _mm_div_ps(scale, _mm_max_ps(_mm_sub_ps(scale, lost), _mm_set1_ps(1e-30f)))
 		: one;
 	return {
 		_mm_mul_ps(_mm_add_ps(f, _mm_mul_ps(u, w)), normalize),

@@ -107,9 +107,9 @@ TFused8 fuseFree(__m256 f, __m256 o, __m256 w)
 		}
 		return {nf, no, _mm256_setzero_ps()};
 	}
-	const __m256 newConflict = _mm256_div_ps(_mm256_mul_ps(o, w), scale);
+	const __m256 lost = _mm256_mul_ps(o, w), newConflict = _mm256_div_ps(lost, scale);
 	const __m256 normalize = Rule == FreeFusion::Dempster
-		? _mm256_div_ps(one, _mm256_max_ps(_mm256_sub_ps(one, newConflict), _mm256_set1_ps(1e-30f)))
+		? _mm256_div_ps(scale, _mm256_max_ps(_mm256_sub_ps(scale, lost), _mm256_set1_ps(1e-30f)))
 		: one;
 	return {
 		_mm256_mul_ps(_mm256_add_ps(f, _mm256_mul_ps(u, w)), normalize),

@@ -270,13 +270,13 @@ class EvidentialGridStorage
 			restamp(c);
 			return;
 		}
-		const float newConflict = o * w / scale;
+		// Dempster's 1 / (1 - o w / scale) in one division, not two in a row.
 		// At total conflict both products are 0 and n becomes vacuous.
 		const float normalize =
-			Rule == FreeFusion::Dempster ? 1.0f / std::max(1.0f - newConflict, 1e-30f) : 1.0f;
+			Rule == FreeFusion::Dempster ? scale / std::max(scale - o * w, 1e-30f) : 1.0f;
 		if constexpr (KeepsConflict)
 			encodeScaled(
-				c, scale * (1.0f - keep * (1.0f - newConflict)), (f + u * w) * normalize,
+				c, scale * (1.0f - keep * (1.0f - o * w / scale)), (f + u * w) * normalize,
 				(o - o * w) * normalize);
 		else
 			encodeScaledNormal(c, (f + u * w) * normalize, (o - o * w) * normalize, m_ceiling);
