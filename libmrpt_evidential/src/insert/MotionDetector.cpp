@@ -17,10 +17,8 @@ double insertionTimeBefore(const EvidentialGridStorage& grid, std::size_t k)
 	return times.size() > k ? times[times.size() - 1 - k] : times.front();
 }
 
-/** The cell leans occupied and is no thing that moved: a thing that
- * arrived, however long ago, is no structure (its sides, first seen later,
- * are arrivals too), nor is a cell leaving. */
-bool standsStill(const EvidentialGridStorage& grid, std::size_t cell)
+/** The cell leans occupied and has no event of a thing that moved. */
+bool leansOccupiedWithoutEvent(const EvidentialGridStorage& grid, std::size_t cell)
 {
 	if (!leansOccupied(grid.read(cell))) return false;
 	const CellEvent e = grid.event(cell);
@@ -38,7 +36,23 @@ TWindow windowAround(const GridGeometry& g, std::size_t idx, int r)
 	return {std::max(0, cx - r), std::min(g.sizeX - 1, cx + r), std::max(0, cy - r),
 			std::min(g.sizeY - 1, cy + r)};
 }
+
+/** True when `pred` holds for a cell within `r` cells of idx, idx excluded. */
+template <typename Pred>
+bool anyAround(const GridGeometry& g, std::size_t idx, int r, Pred&& pred)
+{
+	const TWindow w = windowAround(g, idx, r);
+	for (int y = w.y0; y <= w.y1; ++y)
+		for (int x = w.x0; x <= w.x1; ++x)
+			if (const std::size_t cell = g.index(x, y); cell != idx && pred(cell)) return true;
+	return false;
+}
 }  // namespace
+
+bool CMotionDetector::standsStill(const EvidentialGridStorage& grid, std::size_t cell) const
+{
+	return leansOccupiedWithoutEvent(grid, cell) && !isScanArrival(cell);
+}
 
 void CMotionDetector::afterFusionOfEventCell(
 	EvidentialGridStorage& grid, std::size_t idx, CellEvent e, const Mass& observed,
@@ -107,34 +121,33 @@ bool CMotionDetector::besideOccupied(
 	const GridGeometry& g = grid.geometry();
 	const int near = m_rules.arrivalClearanceCells;
 	const int cx = g.columnOf(idx), cy = g.rowOf(idx);
-	const TWindow w = windowAround(g, idx, std::max(near, m_rules.clearanceCells));
-	for (int y = w.y0; y <= w.y1; ++y)
-		for (int x = w.x0; x <= w.x1; ++x)
-		{
-			const std::size_t cell = g.index(x, y);
-			// Farther than the next cells, only what no beam ever crossed:
-			// a face seen at a grazing angle, whose spread lies along it.
-			const bool nearby = std::max(std::abs(x - cx), std::abs(y - cy)) <= near;
-			if (cell != idx && (nearby || grid.neverSeenFree(cell)) && standsStill(grid, cell))
-				return true;
-		}
-	return false;
+	return anyAround(g, idx, std::max(near, m_rules.clearanceCells), [&](std::size_t cell) {
+		// Farther than the next cells, only what no beam ever crossed: a
+		// face seen at a grazing angle, whose spread lies along it.
+		const bool nearby =
+			std::max(std::abs(g.columnOf(cell) - cx), std::abs(g.rowOf(cell) - cy)) <= near;
+		return (nearby || grid.neverSeenFree(cell)) && standsStill(grid, cell);
+	});
 }
 
 bool CMotionDetector::besideOpenArrival(
 	const EvidentialGridStorage& grid, std::size_t idx) const
 {
-	const GridGeometry& g = grid.geometry();
-	const TWindow w = windowAround(g, idx, m_rules.thingCells);
-	for (int y = w.y0; y <= w.y1; ++y)
-		for (int x = w.x0; x <= w.x1; ++x)
-		{
-			const std::size_t cell = g.index(x, y);
-			if (cell != idx && isRecentArrival(grid, cell) && !nearStaticStructure(grid, cell) &&
-				!besideUnseen(grid, cell, 1))
-				return true;
-		}
-	return false;
+	return anyAround(grid.geometry(), idx, m_rules.thingCells, [&](std::size_t cell) {
+		return isRecentArrival(grid, cell) && !nearStaticStructure(grid, cell) &&
+			!besideUnseen(grid, cell, 1);
+	});
+}
+
+bool CMotionDetector::touchesArrival(
+	const EvidentialGridStorage& grid, std::size_t idx) const
+{
+	return anyAround(grid.geometry(), idx, m_rules.faceGapCells, [&](std::size_t cell) {
+		// A pending arrival leans free; a leaving cell leans occupied.
+		const CellEvent e = grid.event(cell);
+		return e == CellEvent::Appeared ||
+			(e == CellEvent::Leaving && !leansOccupied(grid.read(cell))) || isScanArrival(cell);
+	});
 }
 
 void CMotionDetector::settleArrival(
@@ -149,12 +162,12 @@ void CMotionDetector::settleArrival(
 	if (before == CellEvent::Leaving)
 	{
 		// Pending: confirmed by a hit at one of the next insertions, unless
-		// the cell has flipped before, and only beside a thing seen arriving
-		// in the open.
+		// the cell has flipped before, and only as part of a thing seen
+		// arriving in the open.
 		const bool confirmed = !leansOccupied(grid.read(idx)) && !grid.flipped(idx) &&
 			since < grid.latestTime() &&
 			since >= insertionTimeBefore(grid, kConfirmationInsertions) &&
-			besideOpenArrival(grid, idx);
+			touchesArrival(grid, idx) && besideOpenArrival(grid, idx);
 		if (confirmed) grid.setEventKeepingTime(idx, CellEvent::Appeared), m_arrivals.push_back(idx);
 		return;
 	}
@@ -180,6 +193,13 @@ void CMotionDetector::settle(EvidentialGridStorage& grid, std::size_t impactCell
 		m_candidates.clear();
 		return;
 	}
+	// The scan's candidate arrivals, whatever the order they are settled
+	// in: no structure for each other (standsStill), and the face a pending
+	// arrival may be part of (touchesArrival).
+	m_scanArrivals.clear();
+	for (const TCandidate& c : m_candidates)
+		if (c.event == CellEvent::Appeared) m_scanArrivals.push_back(c.index);
+	std::sort(m_scanArrivals.begin(), m_scanArrivals.end());
 	for (const TCandidate& c : m_candidates)
 	{
 		const CellEvent before = grid.event(c.index);

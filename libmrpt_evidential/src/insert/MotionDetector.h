@@ -41,6 +41,13 @@ struct TMotionRules
 	 * the clearance less that spread (measured from the spread, not the
 	 * face), at least the next cell; 0 with no clearance. */
 	int arrivalClearanceCells = 1;
+	/** The reach, in cells, between the hits of one thing's face
+	 * (kFaceGap): a pending arrival is confirmed only this close to
+	 * another arrival. */
+	int faceGapCells = 2;
+	/** Metres: beams half a degree apart end 9 cm apart on a face 10 m
+	 * away. */
+	static constexpr double kFaceGap = 0.1;
 };
 
 /** Collects a scan's candidate events as its cells are fused, then settles
@@ -49,14 +56,17 @@ struct TMotionRules
  *
  * - Something appeared: a cell seen free now holds a beam's end (conflict
  *   before(F) observed(O) of at least minConflict). Beside what leans
- *   occupied and is not itself an arrival, of any age, or leaving (within
+ *   occupied and is not itself an arrival, of any age, leaving or another
+ *   candidate arrival of the scan (within
  *   arrivalClearanceCells: a face, or the imprecision's spread in front of
  *   it; within the clearance: a face no beam ever crossed), or beside a
  *   cell never seen free (what stood hidden is seen for the first time),
  *   that is likely the pose's error: the cell
  *   is only pending (CellEvent::Leaving while it leans free) until one of
  *   the next kConfirmationInsertions insertions hits it again, beside a
- *   thing seen arriving in the open (besideOpenArrival). A thing that
+ *   thing seen arriving in the open (besideOpenArrival) and within
+ *   faceGapCells of another arrival (touchesArrival: a wall's end beside
+ *   the door a person walks through is no part of the person). A thing that
  *   arrived is hit again at once; a cell that pose error flips beside a wall
  *   or a thing's face comes and goes, so a pending arrival turned down (seen
  *   free) marks the cell flipped for good (never confirmed again), and a
@@ -87,6 +97,7 @@ class CMotionDetector
 	{
 		m_rules = rules;
 		m_candidates.clear();
+		m_scanArrivals.clear();
 	}
 
 	/** After cell idx of `grid` has fused `observed`, with that fusion's
@@ -158,8 +169,8 @@ class CMotionDetector
 		const Mass& observed, bool impact);
 	/** True when a cell within clearanceCells of idx (idx excluded) is static
 	 * structure: it leans occupied, held beams' ends or was never seen free
-	 * (a wall's inside), and is not an arrival (of any age: a thing that came
-	 * and stays is no structure) or leaving. */
+	 * (a wall's inside), and stands still (standsStill: no thing that
+	 * moved). */
 	bool nearStaticStructure(const EvidentialGridStorage& grid, std::size_t idx) const;
 	/** True when a cell within `reach` cells of idx was never seen free
 	 * (n(F) = 0; an arrival's cell counts as seen): a hit next to one is the
@@ -181,6 +192,20 @@ class CMotionDetector
 	 * free. A thing that moves shows faces out of the clearance of what it
 	 * passes; hits that stay within it, along a face, are the pose's error. */
 	bool besideOpenArrival(const EvidentialGridStorage& grid, std::size_t idx) const;
+	/** True when an arrival, a pending arrival or a candidate arrival of
+	 * the scan lies within faceGapCells of idx (idx excluded): idx is part
+	 * of a thing's face, not a wall's end that a thing passes. */
+	bool touchesArrival(const EvidentialGridStorage& grid, std::size_t idx) const;
+	/** The cell leans occupied and is no thing that moved: a thing that
+	 * arrived, however long ago, is no structure (its sides, first seen
+	 * later, are arrivals too), nor is a cell leaving, nor a candidate
+	 * arrival of the scan (a thing's new face, each cell of which may lean
+	 * occupied after its first hit). */
+	bool standsStill(const EvidentialGridStorage& grid, std::size_t cell) const;
+	bool isScanArrival(std::size_t idx) const
+	{
+		return std::binary_search(m_scanArrivals.begin(), m_scanArrivals.end(), idx);
+	}
 	bool isRecent(const EvidentialGridStorage& grid, std::size_t idx) const
 	{
 		return grid.latestTime() - grid.eventTime(idx) <= m_rules.window;
@@ -201,6 +226,8 @@ class CMotionDetector
 	};
 	TMotionRules m_rules;
 	std::vector<TCandidate> m_candidates;
+	/** The scan's candidate arrivals, sorted, while they are settled. */
+	std::vector<std::size_t> m_scanArrivals;
 	/** Cells set Appeared, to find those that later scans cross,
 	 * at their indices in the grid of layout `m_listedLayout`. */
 	std::vector<std::size_t> m_arrivals;

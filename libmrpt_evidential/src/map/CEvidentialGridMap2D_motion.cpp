@@ -33,7 +33,8 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 		: 0;
 	const TMotionRules rules{
 		io.motionMinConflict, clearance, cells(TMotionRules::kThingSize), io.motionWindow,
-		clearance == 0 ? 0 : std::max(1, clearance - spread)};
+		clearance == 0 ? 0 : std::max(1, clearance - spread),
+		std::max(1, cells(TMotionRules::kFaceGap))};
 	motion.begin(rules);
 	const FusionRule rule = io.fusionRule;
 	const ConflictHandling handling = io.conflictHandling;
