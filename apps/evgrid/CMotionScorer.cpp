@@ -108,6 +108,10 @@ void CMotionScorer::scoreStatic(
 		s.worstShare = share;
 		s.worstScan = k;
 		s.worstTime = time;
+		s.worstCells.clear();
+		for (const int cell : seen.observed())
+			if (m_static[cell] && m_motion[cell] != Motion::None)
+				s.worstCells.emplace_back(m_grid.centreX(cell), m_grid.centreY(cell));
 	}
 }
 

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "CMotionTruth.h"
@@ -45,6 +46,9 @@ struct TStaticScore
 	 * when no scan observed a static cell. */
 	double worstShare = -1, worstTime = 0;
 	std::size_t worstScan = 0;
+	/** The centres (x, y, m) of the static cells that scan flagged: where
+	 * to look in the map's motion picture. */
+	std::vector<std::pair<double, double>> worstCells;
 };
 
 struct TMotionScore

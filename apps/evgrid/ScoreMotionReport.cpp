@@ -64,6 +64,19 @@ std::string meanStaticPct(const TStaticScore& s)
 	return percent(s.shareSum / static_cast<double>(s.scans));
 }
 
+/** The worst scan's flagged static cells, "x,y" (m, three decimals) apart
+ * by spaces; "none" when it flagged none, "n/a" when no scan saw a static
+ * cell. */
+std::string worstCells(const TStaticScore& s)
+{
+	if (s.scans == 0) return "n/a";
+	if (s.worstCells.empty()) return "none";
+	std::string out;
+	for (const auto& [x, y] : s.worstCells)
+		out += (out.empty() ? "" : " ") + fixedText(x, 3) + "," + fixedText(y, 3);
+	return out;
+}
+
 std::string truthGrid(const TTruthGrid& g)
 {
 	return fixedText(g.x0, 2) + " " + fixedText(g.y0, 2) + " " +
@@ -141,7 +154,8 @@ void printMotionReport(
 		os << "  worst scan: n/a (no scan saw a static cell)\n";
 	else
 		os << "  worst scan %: " << percent(st.worstShare) << " at scan "
-		   << st.worstScan << " (" << fixedText(st.worstTime, 2) << " s)\n";
+		   << st.worstScan << " (" << fixedText(st.worstTime, 2) << " s), flagged cells (x,y m): "
+		   << worstCells(st) << "\n";
 }
 
 void writeMotionKeyValues(
@@ -193,7 +207,8 @@ void writeMotionKeyValues(
 	   << "static_worst_scan "
 	   << (st.scans ? std::to_string(st.worstScan) : "n/a") << "\n"
 	   << "static_worst_time_s "
-	   << (st.scans ? fixedText(st.worstTime, 2) : "n/a") << "\n";
+	   << (st.scans ? fixedText(st.worstTime, 2) : "n/a") << "\n"
+	   << "static_worst_cells " << worstCells(st) << "\n";
 }
 
 }  // namespace evgrid

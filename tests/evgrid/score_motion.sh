@@ -2,7 +2,8 @@
 # on the committed room_door_box, a one-lap people scene and the static scene.
 # Checks that every key is there, that the counts and ratios agree with each
 # other and with stdout, that more tolerance never matches less, that the
-# static scene has no truth event under either dating of the truth, that the
+# static scene has no truth event under either dating of the truth (and that
+# its walls' flags are located, without a clearance), that the
 # two datings differ on people and change the truth only, that a map that
 # keeps conflict flags nothing,
 # that a truth of another input, a shifted or a truncated one is an error
@@ -36,6 +37,22 @@ ratio_of() {
   if [ "$2" -eq 0 ]; then echo n/a; else awk -v p="$1" -v w="$2" 'BEGIN { printf "%.4f", p / w }'; fi
 }
 
+# check_worst_cells FILE: the worst scan's flagged static cells are "none",
+# on a scan that flagged none, or "x,y" centres inside the truth grid.
+check_worst_cells() {
+  local f=$1 cells grid
+  cells=$(value static_worst_cells "$f")
+  grid=$(value truth_grid "$f")
+  if [ "$cells" = none ]; then
+    [ "$(value static_worst_pct "$f")" = 0.00 ] || fail "$f: no cell listed for the worst scan"
+    return
+  fi
+  echo "$grid $cells" | awk '{ x0 = $1; y0 = $2; r = $3; x1 = x0 + r * $4; y1 = y0 + r * $5
+    if (NF < 6) exit 1
+    for (i = 6; i <= NF; ++i) { n = split($i, c, ","); if (n != 2 || c[1] < x0 || c[1] > x1 || c[2] < y0 || c[2] > y1) exit 1 } }' ||
+    fail "$f: worst cells $cells not centres in the truth grid $grid"
+}
+
 # check_report FILE STDOUT: every key is there, the numbers agree, and stdout
 # shows the very numbers of FILE.
 check_report() {
@@ -44,7 +61,7 @@ check_report() {
     tolerance_cells truth_times scans_total scans_without_pose scans_refused scans_scored \
     observed_hit_cells observed_crossed_cells static_cells static_observed static_flagged \
     static_flagged_pct static_scans static_mean_pct static_worst_pct static_worst_scan \
-    static_worst_time_s; do
+    static_worst_time_s static_worst_cells; do
     value "$key" "$f" >/dev/null
   done
   [ "$(value scans_total "$f")" -eq $(($(value scans_without_pose "$f") + \
@@ -86,6 +103,9 @@ check_report() {
   if [ "$(value static_scans "$f")" -gt 0 ]; then
     check '$2 >= $1 && $2 <= 100 && $3 < $4' "$f: the worst static scan" \
       "$(value static_mean_pct "$f")" "$(value static_worst_pct "$f")" "$(value static_worst_scan "$f")" "$(value scans_total "$f")"
+    check_worst_cells "$f"
+  else
+    [ "$(value static_worst_cells "$f")" = n/a ] || fail "$f: worst cells without a scan"
   fi
   contains "$s" "motion window: $(value motion_window_s "$f") s (the map's motionWindow); tolerance: $(value tolerance_cells "$f") cell"
   contains "$s" "truth times: $(value truth_times "$f") (each event from "
@@ -93,7 +113,7 @@ check_report() {
   contains "$s" "  observed, summed over the scans: $(value static_observed "$f") cells, $(value static_flagged "$f") flagged"
   contains "$s" "  overall share %: $(value static_flagged_pct "$f")"
   contains "$s" "  mean share per scan %: $(value static_mean_pct "$f") over $(value static_scans "$f") scans"
-  contains "$s" "  worst scan %: $(value static_worst_pct "$f") at scan $(value static_worst_scan "$f") ($(value static_worst_time_s "$f") s)"
+  contains "$s" "  worst scan %: $(value static_worst_pct "$f") at scan $(value static_worst_scan "$f") ($(value static_worst_time_s "$f") s), flagged cells (x,y m): $(value static_worst_cells "$f")"
 }
 
 # score NAME PREFIX [OPTIONS...]: a run with the Normalize map, its report
@@ -124,6 +144,17 @@ for key in appeared_truth:0 disappeared_truth:0 appeared_recalled:0 appeared_rec
   disappeared_recall:n/a appeared_f1:n/a disappeared_f1:n/a; do
   [ "$(value "${key%%:*}" "$T/static.txt")" = "${key#*:}" ] || fail "static: ${key%%:*} is not ${key#*:}"
 done
+
+# Without a clearance for the pose's error, the static scene's walls are
+# flagged, and the report says where.
+sed 's/^motionClearance=.*/motionClearance=0/' "$T/normalize.ini" >"$T/no-clearance.ini"
+grep -qx "motionClearance=0" "$T/no-clearance.ini" || fail "no motionClearance line in $EVGRID_INI"
+run 0 "$EVGRID" score-motion -c "$T/no-clearance.ini" -i "$T/static.rawlog" -p "$T/static.slam.txt" \
+  --truth "$T/static.motion.gz" --output "$T/static-no-clearance.txt"
+cp "$OUT" "$T/static-no-clearance.stdout"
+check_report "$T/static-no-clearance.txt" "$T/static-no-clearance.stdout"
+[ "$(value static_worst_cells "$T/static-no-clearance.txt")" != none ] ||
+  fail "static without a clearance: no wall cell flagged"
 
 # 2. The datings of the truth: observed by default, physical on demand. The
 #    static scene has no event under either; on people they give other truth
