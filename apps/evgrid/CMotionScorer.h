@@ -46,7 +46,7 @@ struct TStaticScore
 	 * when no scan observed a static cell. */
 	double worstShare = -1, worstTime = 0;
 	std::size_t worstScan = 0;
-	/** The centres (x, y, m) of the static cells that scan flagged: where
+	/** The centres (x, y in metres) of the static cells that scan flagged: where
 	 * to look in the map's motion picture. */
 	std::vector<std::pair<double, double>> worstCells;
 };
