@@ -2,7 +2,8 @@
  * beside static structure (the inside of a wall included, and the spread in
  * front of a face next to them; not what the map saw free two cells away)
  * wait for a hit at the next insertions, beside a thing seen arriving in
- * the open whose face reaches them, and stay when hit again, a thing that arrived long ago
+ * the open whose face reaches them (at once when its face reached them
+ * at an earlier insertion), and stay when hit again, a thing that arrived long ago
  * is no structure, a cell that flips between hit and free does not become
  * an arrival (then or later), nor does a hit beside cells never seen free at
  * once, a departure waits until the cell no longer leans occupied and is
@@ -166,6 +167,23 @@ TEST_F(DetectorOnAGrid, ArrivalBesideStructureApartFromAThingInTheOpenStaysPendi
 		EXPECT_EQ(grid.event(thing), CellEvent::Appeared);
 		EXPECT_EQ(grid.event(floor), CellEvent::Leaving);
 	}
+}
+
+TEST_F(DetectorOnAGrid, FirstHitBesideStructureExtendingAnEarlierArrivalIsAnArrivalAtOnce)
+{
+	// A thing seen arriving in the open at 1.0 s, its face reaching two
+	// cells from the floor cell; at 1.1 s its face grows to the floor cell,
+	// beside the wall: an arrival at once, not pending.
+	insertion(1.0, [&] { thingInTheOpen(); });
+	ASSERT_EQ(grid.event(grid.geometry().index(10, 8)), CellEvent::Appeared);
+	insertion(1.1, [&] {
+		weakHit();
+		thingInTheOpen();
+	});
+	EXPECT_EQ(grid.event(floor), CellEvent::Appeared);
+	EXPECT_DOUBLE_EQ(grid.eventTime(floor), 1.1);
+	// With the thing arriving in the same scan, the same first hit is
+	// pending (ArrivalBesideStructureIsConfirmedByTheNextHit).
 }
 
 TEST_F(DetectorOnAGrid, ArrivalBesideStructureHitAgainStaysAnArrival)

@@ -150,10 +150,19 @@ bool CMotionDetector::touchesArrival(
 	});
 }
 
+bool CMotionDetector::touchesEarlierArrival(
+	const EvidentialGridStorage& grid, std::size_t idx) const
+{
+	return anyAround(grid.geometry(), idx, m_rules.faceGapCells, [&](std::size_t cell) {
+		return isRecentArrival(grid, cell) && grid.eventTime(cell) < grid.latestTime();
+	});
+}
+
 void CMotionDetector::settleArrival(
 	EvidentialGridStorage& grid, std::size_t idx, CellEvent before)
 {
-	if (!besideOccupied(grid, idx) && !besideUnseen(grid, idx, 1))
+	const bool unseen = besideUnseen(grid, idx, 1);
+	if (!unseen && !besideOccupied(grid, idx))
 	{
 		grid.setEvent(idx, CellEvent::Appeared), m_arrivals.push_back(idx);
 		return;
@@ -169,6 +178,15 @@ void CMotionDetector::settleArrival(
 			since >= insertionTimeBefore(grid, kConfirmationInsertions) &&
 			touchesArrival(grid, idx) && besideOpenArrival(grid, idx);
 		if (confirmed) grid.setEventKeepingTime(idx, CellEvent::Appeared), m_arrivals.push_back(idx);
+		return;
+	}
+	// The first hit beside structure: at once when it extends the face of
+	// a thing seen arriving at an earlier insertion, in the open (not the
+	// first sight of what stood hidden, nor a cell that flips).
+	if (before == CellEvent::None && !unseen && !grid.flipped(idx) &&
+		touchesEarlierArrival(grid, idx) && besideOpenArrival(grid, idx))
+	{
+		grid.setEvent(idx, CellEvent::Appeared), m_arrivals.push_back(idx);
 		return;
 	}
 	// A cell with no event whose time is later than the oldest one was set

@@ -66,7 +66,11 @@ struct TMotionRules
  *   the next kConfirmationInsertions insertions hits it again, beside a
  *   thing seen arriving in the open (besideOpenArrival) and within
  *   faceGapCells of another arrival (touchesArrival: a wall's end beside
- *   the door a person walks through is no part of the person). A thing that
+ *   the door a person walks through is no part of the person). A first hit
+ *   within faceGapCells of a recent arrival of an earlier insertion, beside
+ *   a thing seen arriving in the open and next to no cell never seen free,
+ *   is an arrival at once: the thing's face grows along what it covered
+ *   (touchesEarlierArrival). A thing that
  *   arrived is hit again at once; a cell that pose error flips beside a wall
  *   or a thing's face comes and goes, so a pending arrival turned down (seen
  *   free) marks the cell flipped for good (never confirmed again), and a
@@ -196,6 +200,10 @@ class CMotionDetector
 	 * the scan lies within faceGapCells of idx (idx excluded): idx is part
 	 * of a thing's face, not a wall's end that a thing passes. */
 	bool touchesArrival(const EvidentialGridStorage& grid, std::size_t idx) const;
+	/** True when a recent arrival of an earlier insertion lies within
+	 * faceGapCells of idx (idx excluded): a thing seen arriving whose face
+	 * idx extends. */
+	bool touchesEarlierArrival(const EvidentialGridStorage& grid, std::size_t idx) const;
 	/** The cell leans occupied and is no thing that moved: a thing that
 	 * arrived, however long ago, is no structure (its sides, first seen
 	 * later, are arrivals too), nor is a cell leaving, nor a candidate
