@@ -91,7 +91,7 @@ TFused fuseFree(__m128 f, __m128 o, __m128 w)
 		: one;
 	return {
 		_mm_mul_ps(_mm_add_ps(f, _mm_mul_ps(u, w)), normalize),
-		_mm_mul_ps(_mm_sub_ps(o, _mm_mul_ps(o, w)), normalize), newConflict};
+		_mm_mul_ps(_mm_sub_ps(o, lost), normalize), newConflict};
 }
 
 /** encodeScaledNormal() on four cells: n(F) and n(O) rounded, each at most

@@ -113,7 +113,7 @@ TFused8 fuseFree(__m256 f, __m256 o, __m256 w)
 		: one;
 	return {
 		_mm256_mul_ps(_mm256_add_ps(f, _mm256_mul_ps(u, w)), normalize),
-		_mm256_mul_ps(_mm256_sub_ps(o, _mm256_mul_ps(o, w)), normalize), newConflict};
+		_mm256_mul_ps(_mm256_sub_ps(o, lost), normalize), newConflict};
 }
 
 /** encodeScaledNormal(): n(F) and n(O) rounded, each at most `ceiling`,

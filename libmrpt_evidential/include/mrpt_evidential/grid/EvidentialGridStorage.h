@@ -270,16 +270,18 @@ class EvidentialGridStorage
 			restamp(c);
 			return;
 		}
-		// Dempster's 1 / (1 - o w / scale) in one division, not two in a row.
-		// At total conflict both products are 0 and n becomes vacuous.
+		// The occupied mass the free sight conflicts with; Dempster's
+		// 1 / (1 - lost / scale) in one division, not two in a row. At total
+		// conflict both products are 0 and n becomes vacuous.
+		const float lost = o * w;
 		const float normalize =
-			Rule == FreeFusion::Dempster ? scale / std::max(scale - o * w, 1e-30f) : 1.0f;
+			Rule == FreeFusion::Dempster ? scale / std::max(scale - lost, 1e-30f) : 1.0f;
 		if constexpr (KeepsConflict)
 			encodeScaled(
-				c, scale * (1.0f - keep * (1.0f - o * w / scale)), (f + u * w) * normalize,
-				(o - o * w) * normalize);
+				c, scale * (1.0f - keep * (1.0f - lost / scale)), (f + u * w) * normalize,
+				(o - lost) * normalize);
 		else
-			encodeScaledNormal(c, (f + u * w) * normalize, (o - o * w) * normalize, m_ceiling);
+			encodeScaledNormal(c, (f + u * w) * normalize, (o - lost) * normalize, m_ceiling);
 		restamp(c);
 	}
 	/** True when a free sight of cell idx may find something for the motion
