@@ -170,6 +170,32 @@ TEST(Motion, BoxThatMovesIsFlaggedAtBothPlacesAndNothingElse)
 	EXPECT_TRUE(std::isnan(map.getCellMotionTime(0.0, -2.0)));
 }
 
+TEST(Motion, BoxThatMovesIsFlaggedWithWeakerMasses)
+{
+	// With muF 0.6 no free sight reaches a conflict of 0.65 (m(O) 0.9999 x
+	// 0.6), with muO 0.6 no hit does: the least conflict is lowered to what
+	// such a sight reaches from a cell as sure as the defaults ask.
+	for (const auto& [muF, muO] : {std::pair{0.6, 0.9}, std::pair{0.7, 0.6}})
+	{
+		SCOPED_TRACE("muF " + std::to_string(muF) + ", muO " + std::to_string(muO));
+		CEvidentialGridMap2D map = roomMap();
+		map.insertionOptions.muF = muF;
+		map.insertionOptions.muO = muO;
+		replayMovingBox(map, 0, 59);
+		EXPECT_EQ(map.countMotion().appeared + map.countMotion().disappeared, 0u);
+		replayMovingBox(map, 60, 64);
+		const TFlags appeared = flags(map, Motion::Appeared);
+		EXPECT_GE(appeared.atAfter, 6) << "the box's new place";
+		EXPECT_EQ(appeared.atBefore + appeared.elsewhere, 0);
+		// Weaker free sights turn the old place free a few scans later.
+		replayMovingBox(map, 65, 74);
+		const TFlags disappeared = flags(map, Motion::Disappeared);
+		EXPECT_GE(disappeared.atBefore, 4) << "the box's old place";
+		EXPECT_EQ(disappeared.elsewhere, 0);
+		EXPECT_EQ(flags(map, Motion::Appeared).elsewhere, 0);
+	}
+}
+
 TEST(Motion, ThingThatMovedLeavesNoArrivalAtItsNewShadowsEdge)
 {
 	// A thing stands 3 m before a robot that does not move, then steps a

@@ -123,7 +123,7 @@ class DetectorOnAGrid : public ::testing::Test
 
 	EvidentialGridStorage grid;
 	CMotionDetector detector;
-	const TMotionRules rules{0.5, 2, 4, 2.0};
+	const TMotionRules rules{0.5, 0.5, 2, 4, 2.0};
 	std::size_t wall = 0, floor = 0;
 	/** Cells the beams of each insertion ended in, for settle(). */
 	std::size_t impactCells = 100;
@@ -277,8 +277,9 @@ TEST_F(DetectorOnAGrid, DefaultRulesNeedTwoSightsBeforeAChange)
 	// conflicts by 0.63: a cell seen once, as the first beams that reach a
 	// corner see it, is no arrival. Seen free twice, it is.
 	const double mapDefault = CEvidentialGridMap2D::TInsertionOptions().motionMinConflict;
-	const TMotionRules defaults{mapDefault, 2, 10, 2.0};
-	ASSERT_EQ(TMotionRules().minConflict, mapDefault) << "the detector's default is the map's";
+	const TMotionRules defaults{mapDefault, mapDefault, 2, 10, 2.0};
+	ASSERT_EQ(TMotionRules().minAppeared, mapDefault) << "the detector's default is the map's";
+	ASSERT_EQ(TMotionRules().minLeft, mapDefault);
 	const std::size_t once = grid.geometry().index(3, 3), twice = grid.geometry().index(3, 17);
 	const auto insertWithDefaults = [&](double t, const std::function<void()>& fusions) {
 		grid.beginInsertion(t);

@@ -85,7 +85,10 @@ struct TEvidentialInsertionOptions : public mrpt::config::CLoadableOptions
 	 * before and occupied now or the other way round, for a fusion to be
 	 * a motion event, (0, 1], default 0.65: with the default masses
 	 * (muF 0.7, muO 0.9) a cell must have been seen free twice, or hit
-	 * twice, before a change of it counts (doc/dynamics.md). */
+	 * twice, before a change of it counts (doc/dynamics.md). With weaker
+	 * masses, where no sight could reach it (muF or muO below 0.7), each
+	 * cause asks instead 0.93 of the sight's mass: a cell as sure before
+	 * the change as the defaults ask. */
 	double motionMinConflict = 0.65;
 	/** `motionClearance`: metres; a change closer than this to static
 	 * structure (cells that lean occupied and are not themselves moving)

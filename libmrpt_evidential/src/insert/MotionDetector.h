@@ -4,6 +4,8 @@
  * the reasons. */
 #pragma once
 
+#include <algorithm>
+
 #include <mrpt_evidential/grid/EvidentialGridStorage.h>
 
 #include <cstddef>
@@ -19,9 +21,9 @@ inline bool leansOccupied(const Mass& m) { return m.occupied > m.free && m.occup
  * are the map's). */
 struct TMotionRules
 {
-	/** Least conflict of one cause (appeared or left) for a fusion to be an
-	 * event. */
-	double minConflict = 0.65;
+	/** Least conflict of each cause for a fusion to be an event: seen free
+	 * before and hit now (appeared), hit before and seen free now (left). */
+	double minAppeared = 0.65, minLeft = 0.65;
 	/** Changes within this many cells of static structure are taken for
 	 * pose error. */
 	int clearanceCells = 3;
@@ -48,6 +50,18 @@ struct TMotionRules
 	/** Metres: beams half a degree apart end 9 cm apart on a face 10 m
 	 * away. */
 	static constexpr double kFaceGap = 0.1;
+	/** `threshold`, or less where a sight of mass `strongest` (muO for a
+	 * hit, muF for a free sight) could not reach it from a cell kSureBefore
+	 * sure of the other class: with the default masses motionMinConflict
+	 * 0.65 asks that much (0.65 / 0.7) of a cell before a free sight
+	 * counts, and weaker masses ask the same instead of nothing ever
+	 * counting (a departure needs 0.65 of m(O) muF, out of reach with
+	 * muF 0.6). */
+	static double reachableConflict(double threshold, double strongest)
+	{
+		return std::min(threshold, kSureBefore * strongest);
+	}
+	static constexpr double kSureBefore = 0.93;
 };
 
 /** Collects a scan's candidate events as its cells are fused, then settles
@@ -55,7 +69,7 @@ struct TMotionRules
  * sees the whole scan, and every cell is fused once).
  *
  * - Something appeared: a cell seen free now holds a beam's end (conflict
- *   before(F) observed(O) of at least minConflict). Beside what leans
+ *   before(F) observed(O) of at least minAppeared). Beside what leans
  *   occupied and is not itself an arrival, of any age, leaving or another
  *   candidate arrival of the scan (within
  *   arrivalClearanceCells: a face, or the imprecision's spread in front of
@@ -113,13 +127,13 @@ class CMotionDetector
 		// Something appears where a beam ends, not in the cells around it
 		// that the sensor model's imprecision reaches; something leaves a
 		// cell that beams ended in.
-		if (impact && split.appeared >= m_rules.minConflict)
+		if (impact && split.appeared >= m_rules.minAppeared)
 		{
 			// A recent arrival hit again: the thing is still there, nothing
 			// new (and no sign of a misplaced scan).
 			if (!isRecentArrival(grid, idx)) m_candidates.push_back({idx, CellEvent::Appeared});
 		}
-		else if (split.disappeared >= m_rules.minConflict && grid.heldImpact(idx))
+		else if (split.disappeared >= m_rules.minLeft && grid.heldImpact(idx))
 			m_candidates.push_back({idx, CellEvent::Disappeared});
 		else if (const CellEvent e = grid.event(idx); e != CellEvent::None)
 			afterFusionOfEventCell(grid, idx, e, observed, impact);

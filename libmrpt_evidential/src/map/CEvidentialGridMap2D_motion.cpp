@@ -32,7 +32,9 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 		? cells(std::min(io.imprecision, io.freeMargin))
 		: 0;
 	const TMotionRules rules{
-		io.motionMinConflict, clearance, cells(TMotionRules::kThingSize), io.motionWindow,
+		TMotionRules::reachableConflict(io.motionMinConflict, io.muO),
+		TMotionRules::reachableConflict(io.motionMinConflict, io.muF), clearance,
+		cells(TMotionRules::kThingSize), io.motionWindow,
 		clearance == 0 ? 0 : std::max(1, clearance - spread),
 		std::max(1, cells(TMotionRules::kFaceGap))};
 	motion.begin(rules);
@@ -82,10 +84,10 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 		detector.afterFusion(m_grid, idx, split, observed, impact);
 	};
 	// A free mass w finds an event only in a cell that already has one, or
-	// whose n(O) w reaches motionMinConflict.
+	// whose n(O) w reaches the least conflict of a departure.
 	const auto occupiedBelowFor = [&](double w) {
 		return static_cast<std::uint16_t>(std::min(
-			std::ceil(io.motionMinConflict / std::max(w, 1e-9) * kMassScale), kMassScale));
+			std::ceil(rules.minLeft / std::max(w, 1e-9) * kMassScale), kMassScale));
 	};
 	const double w = uniform.free;
 	const std::uint16_t occupiedBelow = occupiedBelowFor(w);
