@@ -271,6 +271,19 @@ TEST_F(DetectorOnAGrid, DepartureBesideWhereTheThingStepsIsReported)
 	EXPECT_EQ(grid.event(before), CellEvent::Disappeared);
 }
 
+TEST(MotionRules, LeastConflictWithinReachOfTheSensorsMasses)
+{
+	// The default masses leave the threshold as it is.
+	EXPECT_EQ(TMotionRules::reachableConflict(0.65, 0.9), 0.65);
+	EXPECT_EQ(TMotionRules::reachableConflict(0.65, 0.7), 0.65);
+	// A free sight of 0.6 conflicts with a cell at the ceiling by 0.6 at most:
+	// it asks as sure a cell as the defaults do.
+	EXPECT_DOUBLE_EQ(TMotionRules::reachableConflict(0.65, 0.6), 0.93 * 0.6);
+	// A sight without mass makes no conflict, and 0 would make every fusion
+	// an event.
+	EXPECT_EQ(TMotionRules::reachableConflict(0.65, 0.0), 0.65);
+}
+
 TEST_F(DetectorOnAGrid, DefaultRulesNeedTwoSightsBeforeAChange)
 {
 	// With the default masses (muF 0.7, muO 0.9), one free sight then a hit

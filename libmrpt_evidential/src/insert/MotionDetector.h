@@ -56,10 +56,11 @@ struct TMotionRules
 	 * 0.65 asks that much (0.65 / 0.7) of a cell before a free sight
 	 * counts, and weaker masses ask the same instead of nothing ever
 	 * counting (a departure needs 0.65 of m(O) muF, out of reach with
-	 * muF 0.6). */
+	 * muF 0.6). A sight without mass (muF or muO 0) keeps `threshold`: a
+	 * conflict of 0 is no event. */
 	static double reachableConflict(double threshold, double strongest)
 	{
-		return std::min(threshold, kSureBefore * strongest);
+		return strongest > 0.0 ? std::min(threshold, kSureBefore * strongest) : threshold;
 	}
 	static constexpr double kSureBefore = 0.93;
 };
