@@ -4,10 +4,9 @@
  * the reasons. */
 #pragma once
 
-#include <algorithm>
-
 #include <mrpt_evidential/grid/EvidentialGridStorage.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
