@@ -8,7 +8,7 @@
  * an arrival (then or later), nor does a hit beside cells never seen free at
  * once, a departure waits until the cell no longer leans occupied and is
  * none beside a wall's unseen inside or behind a thin thing's grazed
- * face, one sight is not enough for the
+ * face (never reported while it waits there), one sight is not enough for the
  * default rules, a scan whose impacts mostly land on free cells (a
  * misplaced one) settles nothing, and the list of recent arrivals outlives
  * growth that moves no cell. */
@@ -71,8 +71,8 @@ class DetectorOnAGrid : public ::testing::Test
 	void weakHit() { fuse(floor, Mass::simpleOccupied(0.55), true); }
 	/** Free sights of `cells`, one insertion a tenth of a second from data
 	 * time t on, until none of them leans occupied (30 at most), as rays
-	 * that cross them. */
-	void seeFreeUntilNoneLeansOccupied(double t, const std::vector<std::size_t>& cells)
+	 * that cross them; returns the data time of the next insertion. */
+	double seeFreeUntilNoneLeansOccupied(double t, const std::vector<std::size_t>& cells)
 	{
 		const auto anyLeans = [&] {
 			return std::any_of(cells.begin(), cells.end(), [&](std::size_t idx) {
@@ -83,6 +83,18 @@ class DetectorOnAGrid : public ::testing::Test
 			insertion(t, [&] {
 				for (const std::size_t idx : cells) fuse(idx, Mass::simpleFree(0.7), false);
 			});
+		return t;
+	}
+	/** A face beside structure that turned free waits as a departure under
+	 * way, never reported, while rays keep crossing it from data time t on,
+	 * until the wait is over. */
+	void expectNoDepartureWhileTheFaceWaits(double t, std::size_t face)
+	{
+		for (std::size_t k = 0; k < CMotionDetector::kDepartureWait; ++k, t += 0.1)
+		{
+			insertion(t, [&] { fuse(face, Mass::simpleFree(0.7), false); });
+			EXPECT_NE(grid.event(face), CellEvent::Disappeared) << "insertion " << k;
+		}
 	}
 	void freeSight() { fuse(floor, Mass::simpleFree(0.7), false); }
 	/** A thing that stands in `cell` from data time 1 s: beams end in it
@@ -409,10 +421,11 @@ TEST_F(DetectorOnAGrid, GrazedFaceBesideAWallsUnseenInsideIsNoDeparture)
 			fuse(face, Mass::simpleOccupied(0.9), true);
 			fuse(thing, Mass::simpleOccupied(0.9), true);
 		});
-	seeFreeUntilNoneLeansOccupied(1.1, {face, thing});
+	const double turnedFreeAt = seeFreeUntilNoneLeansOccupied(1.1, {face, thing});
 	ASSERT_FALSE(leansOccupied(grid.read(face)));
 	ASSERT_FALSE(leansOccupied(grid.read(thing)));
 	EXPECT_EQ(grid.event(thing), CellEvent::Disappeared);
+	expectNoDepartureWhileTheFaceWaits(turnedFreeAt, face);
 	EXPECT_EQ(grid.event(face), CellEvent::None);
 	EXPECT_TRUE(grid.flipped(face));
 }
@@ -445,8 +458,9 @@ TEST_F(DetectorOnAGrid, GrazedFaceOfAThinThingIsNoDeparture)
 	ASSERT_TRUE(grid.neverSeenFree(g.index(10, 12)));
 	std::vector<std::size_t> faceRow;
 	for (int dx = -2; dx <= 2; ++dx) faceRow.push_back(g.index(10 + dx, 10));
-	seeFreeUntilNoneLeansOccupied(1.1, faceRow);
+	const double turnedFreeAt = seeFreeUntilNoneLeansOccupied(1.1, faceRow);
 	ASSERT_FALSE(leansOccupied(grid.read(face)));
+	expectNoDepartureWhileTheFaceWaits(turnedFreeAt, face);
 	EXPECT_EQ(grid.event(face), CellEvent::None);
 }
 

@@ -146,7 +146,8 @@ bool CMotionDetector::touchesArrival(
 		// A pending arrival leans free; a leaving cell leans occupied.
 		const CellEvent e = grid.event(cell);
 		return e == CellEvent::Appeared ||
-			(e == CellEvent::Leaving && !leansOccupied(grid.read(cell))) || isScanArrival(cell);
+			(e == CellEvent::Leaving && !leansOccupied(grid.read(cell)) && !isLeaving(cell)) ||
+			isScanArrival(cell);
 	});
 }
 
@@ -161,6 +162,13 @@ bool CMotionDetector::touchesEarlierArrival(
 void CMotionDetector::settleArrival(
 	EvidentialGridStorage& grid, std::size_t idx, CellEvent before)
 {
+	// A leaving cell waiting beside structure hit again: what left it is
+	// back, or the pose's error that turned it has turned back.
+	if (before == CellEvent::Leaving && isLeaving(idx))
+	{
+		grid.setEvent(idx, CellEvent::None);
+		return;
+	}
 	const bool unseen = besideUnseen(grid, idx, 1);
 	if (!unseen && !besideOccupied(grid, idx))
 	{
@@ -200,8 +208,61 @@ void CMotionDetector::settleArrival(
 		grid.setEvent(idx, CellEvent::Leaving);
 }
 
+void CMotionDetector::settleDeparture(
+	EvidentialGridStorage& grid, std::size_t idx, CellEvent before)
+{
+	if (leansOccupied(grid.read(idx)))
+	{
+		// Still leaning occupied: a ray may have grazed it (a wall's face,
+		// with the pose's error), and the static map does not say free yet.
+		// Remember when this began.
+		if (before != CellEvent::Leaving)
+			grid.setEvent(idx, CellEvent::Leaving), m_scanLeaving.push_back(idx);
+		return;
+	}
+	if (!nearStaticStructure(grid, idx) && !besideUnseen(grid, idx, m_rules.clearanceCells))
+	{
+		// Free now, and nothing stands beside it that could explain a ray
+		// through it: no structure, and no unseen inside of a wall whose
+		// face a ray grazed (the face's cells then all turn free together,
+		// and none of them counts as structure). That inside may lie a row
+		// or two behind the face: a thin thing (a door's leaf) is a face, a
+		// row of cells rays crossed at times, and what no ray reached,
+		// within the clearance.
+		if (before == CellEvent::Leaving)
+			grid.setEventKeepingTime(idx, CellEvent::Disappeared);
+		else
+			grid.setEvent(idx, CellEvent::Disappeared);
+		return;
+	}
+	// Beside structure: a leaving cell waits for the thing to move on.
+	const bool waits = before == CellEvent::Leaving && isLeaving(idx) &&
+		grid.eventTime(idx) > insertionTimeBefore(grid, kDepartureWait);
+	if (waits) return;
+	// Free again beside structure: a pending arrival turned down (or a grazed
+	// cell that turned free): the cell flips.
+	if (before == CellEvent::Leaving) grid.markFlipped(idx);
+	grid.setEvent(idx, CellEvent::None);
+}
+
+void CMotionDetector::listScanLeaving()
+{
+	if (m_scanLeaving.empty()) return;
+	std::sort(m_scanLeaving.begin(), m_scanLeaving.end());
+	const auto middle = static_cast<std::ptrdiff_t>(m_leaving.size());
+	m_leaving.insert(m_leaving.end(), m_scanLeaving.begin(), m_scanLeaving.end());
+	std::inplace_merge(m_leaving.begin(), m_leaving.begin() + middle, m_leaving.end());
+	m_scanLeaving.clear();
+}
+
 void CMotionDetector::settle(EvidentialGridStorage& grid, std::size_t impactCells)
 {
+	// The cells listed leaving that have been judged since (reported, set
+	// back, or no longer leaving) leave the list.
+	m_leaving.erase(
+		std::remove_if(m_leaving.begin(), m_leaving.end(),
+					   [&](std::size_t idx) { return grid.event(idx) != CellEvent::Leaving; }),
+		m_leaving.end());
 	const auto arrivals = static_cast<std::size_t>(std::count_if(
 		m_candidates.begin(), m_candidates.end(),
 		[](const TCandidate& c) { return c.event == CellEvent::Appeared; }));
@@ -222,41 +283,11 @@ void CMotionDetector::settle(EvidentialGridStorage& grid, std::size_t impactCell
 	{
 		const CellEvent before = grid.event(c.index);
 		if (c.event == CellEvent::Appeared)
-		{
 			settleArrival(grid, c.index, before);
-			continue;
-		}
-		if (leansOccupied(grid.read(c.index)))
-		{
-			// Still leaning occupied: a ray may have grazed it (a wall's
-			// face, with the pose's error), and the static map does not say
-			// free yet. Remember when this began.
-			if (before != CellEvent::Leaving) grid.setEvent(c.index, CellEvent::Leaving);
-		}
-		else if (
-			!nearStaticStructure(grid, c.index) &&
-			!besideUnseen(grid, c.index, m_rules.clearanceCells))
-		{
-			// Free now, and nothing stands beside it that could explain a
-			// ray through it: no structure, and no unseen inside of a wall
-			// whose face a ray grazed (the face's cells then all turn free
-			// together, and none of them counts as structure). That inside
-			// may lie a row or two behind the face: a thin thing (a door's
-			// leaf) is a face, a row of cells rays crossed at times, and
-			// what no ray reached, within the clearance.
-			if (before == CellEvent::Leaving)
-				grid.setEventKeepingTime(c.index, CellEvent::Disappeared);
-			else
-				grid.setEvent(c.index, CellEvent::Disappeared);
-		}
 		else
-		{
-			// Beside structure and free again: a pending arrival turned down
-			// (or a grazed cell that turned free): the cell flips.
-			if (before == CellEvent::Leaving) grid.markFlipped(c.index);
-			grid.setEvent(c.index, CellEvent::None);
-		}
+			settleDeparture(grid, c.index, before);
 	}
+	listScanLeaving();
 }
 
 }  // namespace mrpt_evidential

@@ -99,8 +99,15 @@ struct TMotionRules
  *   occupied, away from static structure and from cells never seen free
  *   (within the clearance: a wall's inside, or what lies behind a thin
  *   thing, behind a face that rays grazed), its departure is reported,
- *   dated from the first free sight. An arrival stays while its thing
- *   does; a departure seen free again after its window is over.
+ *   dated from the first free sight. Beside structure it waits, still
+ *   Leaving, until kDepartureWait insertions after that sight before it
+ *   is taken for the pose's error: a thing's cells that turn free while
+ *   its body still stands within the clearance (masses stronger than the
+ *   defaults turn a cell in fewer sights) are reported once it has moved
+ *   on. Only a leaving cell waits, not a pending arrival seen free (both
+ *   are Leaving and lean free: the detector lists the leaving ones). An
+ *   arrival stays while its thing does; a departure seen free again after
+ *   its window is over.
  * - A misplaced scan: when a large share of the cells a scan's beams ended
  *   in were seen free before (kMisplacedShare of them, and at least
  *   kMisplacedArrivals), the scan disagrees with the map as a whole. That
@@ -151,7 +158,7 @@ class CMotionDetector
 		// block) has them at other indices: the list starts again (its
 		// arrivals then last their window at most). Growth into the room
 		// the grid kept moves no cell.
-		if (grid.layout() != m_listedLayout) m_arrivals.clear();
+		if (grid.layout() != m_listedLayout) m_arrivals.clear(), m_leaving.clear();
 		m_listedLayout = grid.layout();
 		std::size_t kept = 0;
 		for (const std::size_t idx : m_arrivals)
@@ -172,11 +179,15 @@ class CMotionDetector
 	}
 	/** Settles the candidates of the scan, whose beams ended in
 	 * `impactCells` cells: none when the scan is a misplaced one (see the
-	 * class). */
+	 * class). After judgeCrossedArrivals() of the same scan. */
 	void settle(EvidentialGridStorage& grid, std::size_t impactCells);
 	/** The rule of a misplaced scan (see the class). */
 	static constexpr double kMisplacedShare = 0.2;
 	static constexpr std::size_t kMisplacedArrivals = 8;
+	/** Insertions a departure beside structure waits from its first free
+	 * sight (see the class): the default masses need some eight free
+	 * sights to turn a cell that stood long. */
+	static constexpr std::size_t kDepartureWait = 8;
 
    private:
 	/** A cell with an event that the scan saw without much conflict: an
@@ -236,10 +247,22 @@ class CMotionDetector
 	{
 		return grid.event(idx) == CellEvent::Appeared && isRecent(grid, idx);
 	}
+	/** The cell is Leaving as a departure under way, not as a pending
+	 * arrival. */
+	bool isLeaving(std::size_t idx) const
+	{
+		return std::binary_search(m_leaving.begin(), m_leaving.end(), idx);
+	}
 	/** The rules of a pending arrival, in insertions (see the class). */
 	static constexpr std::size_t kConfirmationInsertions = 2, kFlipMemory = 40;
+
 	/** Settles the candidate arrival at cell idx, whose event was `before`. */
 	void settleArrival(EvidentialGridStorage& grid, std::size_t idx, CellEvent before);
+	/** Settles the candidate departure at cell idx, whose event was
+	 * `before`. */
+	void settleDeparture(EvidentialGridStorage& grid, std::size_t idx, CellEvent before);
+	/** Adds the scan's leaving cells to m_leaving. */
+	void listScanLeaving();
 
 	struct TCandidate
 	{
@@ -253,6 +276,11 @@ class CMotionDetector
 	/** Cells set Appeared, to find those that later scans cross,
 	 * at their indices in the grid of layout `m_listedLayout`. */
 	std::vector<std::size_t> m_arrivals;
+	/** Cells set Leaving as departures under way, sorted, at their indices
+	 * in the grid of layout `m_listedLayout` (a grid whose cells moved starts
+	 * the list again; its leaving cells are then judged as pending arrivals
+	 * are); those set by the scan being settled, merged once it is. */
+	std::vector<std::size_t> m_leaving, m_scanLeaving;
 	std::size_t m_listedLayout = 0;
 };
 
