@@ -255,7 +255,6 @@ class CMotionDetector
 	}
 	/** The rules of a pending arrival, in insertions (see the class). */
 	static constexpr std::size_t kConfirmationInsertions = 2, kFlipMemory = 40;
-
 	/** Settles the candidate arrival at cell idx, whose event was `before`. */
 	void settleArrival(EvidentialGridStorage& grid, std::size_t idx, CellEvent before);
 	/** Settles the candidate departure at cell idx, whose event was
