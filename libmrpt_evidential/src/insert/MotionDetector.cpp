@@ -143,7 +143,8 @@ bool CMotionDetector::touchesArrival(
 	const EvidentialGridStorage& grid, std::size_t idx) const
 {
 	return anyAround(grid.geometry(), idx, m_rules.faceGapCells, [&](std::size_t cell) {
-		// A pending arrival leans free; a leaving cell leans occupied.
+		// A pending arrival leans free; a leaving cell leans occupied or,
+		// waiting beside structure, is listed.
 		const CellEvent e = grid.event(cell);
 		return e == CellEvent::Appeared ||
 			(e == CellEvent::Leaving && !leansOccupied(grid.read(cell)) && !isLeaving(cell)) ||
