@@ -207,6 +207,10 @@ void CMotionDetector::settleArrival(
 		grid.setEventKeepingTime(idx, CellEvent::Leaving);
 	else
 		grid.setEvent(idx, CellEvent::Leaving);
+	// A pending arrival is no departure under way, whatever the cell was
+	// listed as before.
+	const auto listed = std::lower_bound(m_leaving.begin(), m_leaving.end(), idx);
+	if (listed != m_leaving.end() && *listed == idx) m_leaving.erase(listed);
 }
 
 void CMotionDetector::settleDeparture(
@@ -218,7 +222,10 @@ void CMotionDetector::settleDeparture(
 		// with the pose's error), and the static map does not say free yet.
 		// Remember when this began.
 		if (before != CellEvent::Leaving)
-			grid.setEvent(idx, CellEvent::Leaving), m_scanLeaving.push_back(idx);
+		{
+			grid.setEvent(idx, CellEvent::Leaving);
+			if (!isLeaving(idx)) m_scanLeaving.push_back(idx);
+		}
 		return;
 	}
 	if (!nearStaticStructure(grid, idx) && !besideUnseen(grid, idx, m_rules.clearanceCells))
@@ -258,12 +265,19 @@ void CMotionDetector::listScanLeaving()
 
 void CMotionDetector::settle(EvidentialGridStorage& grid, std::size_t impactCells)
 {
-	// The cells listed leaving that have been judged since (reported, set
-	// back, or no longer leaving) leave the list.
-	m_leaving.erase(
-		std::remove_if(m_leaving.begin(), m_leaving.end(),
-					   [&](std::size_t idx) { return grid.event(idx) != CellEvent::Leaving; }),
-		m_leaving.end());
+	// A listed cell is a departure under way only while its event is
+	// Leaving (every use of the list asks both), so the cells judged since
+	// (reported, set back) can stay listed for a while: they leave the list
+	// once it has doubled, not at every scan (it holds thousands of cells on
+	// a long run, grazed faces that never turned free).
+	if (m_leaving.size() > 2 * m_leavingKept + kLeavingSlack)
+	{
+		m_leaving.erase(
+			std::remove_if(m_leaving.begin(), m_leaving.end(),
+						   [&](std::size_t idx) { return grid.event(idx) != CellEvent::Leaving; }),
+			m_leaving.end());
+		m_leavingKept = m_leaving.size();
+	}
 	const auto arrivals = static_cast<std::size_t>(std::count_if(
 		m_candidates.begin(), m_candidates.end(),
 		[](const TCandidate& c) { return c.event == CellEvent::Appeared; }));

@@ -158,7 +158,7 @@ class CMotionDetector
 		// block) has them at other indices: the list starts again (its
 		// arrivals then last their window at most). Growth into the room
 		// the grid kept moves no cell.
-		if (grid.layout() != m_listedLayout) m_arrivals.clear(), m_leaving.clear();
+		if (grid.layout() != m_listedLayout) m_arrivals.clear(), m_leaving.clear(), m_leavingKept = 0;
 		m_listedLayout = grid.layout();
 		std::size_t kept = 0;
 		for (const std::size_t idx : m_arrivals)
@@ -247,8 +247,8 @@ class CMotionDetector
 	{
 		return grid.event(idx) == CellEvent::Appeared && isRecent(grid, idx);
 	}
-	/** The cell is Leaving as a departure under way, not as a pending
-	 * arrival. */
+	/** The cell is listed as a departure under way: while its event is
+	 * Leaving, it is not a pending arrival. */
 	bool isLeaving(std::size_t idx) const
 	{
 		return std::binary_search(m_leaving.begin(), m_leaving.end(), idx);
@@ -278,8 +278,13 @@ class CMotionDetector
 	/** Cells set Leaving as departures under way, sorted, at their indices
 	 * in the grid of layout `m_listedLayout` (a grid whose cells moved starts
 	 * the list again; its leaving cells are then judged as pending arrivals
-	 * are); those set by the scan being settled, merged once it is. */
+	 * are); those set by the scan being settled, merged once it is. A cell
+	 * judged since may stay listed until the list is pruned (settle()). */
 	std::vector<std::size_t> m_leaving, m_scanLeaving;
+	/** The list's length after its latest pruning, and the growth beyond
+	 * twice that which prunes it again. */
+	std::size_t m_leavingKept = 0;
+	static constexpr std::size_t kLeavingSlack = 256;
 	std::size_t m_listedLayout = 0;
 };
 
