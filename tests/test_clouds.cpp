@@ -39,7 +39,7 @@ Decision at(const CEvidentialGridMap2D& map, double x, double y)
 
 TEST(Clouds, GroundFreeObstacleOccupiedBehindUnknown)
 {
-	for (const auto removal : {GroundRemoval::Plane, GroundRemoval::Height})
+	for (const auto removal : {GroundRemoval::Plane, GroundRemoval::Terrain, GroundRemoval::Height})
 	{
 		SCOPED_TRACE(static_cast<int>(removal));
 		CEvidentialGridMap2D map = makeMap(removal);
@@ -58,11 +58,15 @@ TEST(Clouds, OverhangAndLowKerbAreNotObstacles)
 {
 	const test::TBox overhang{3.0, 3.5, -2.0, 2.0, 2.6, 3.0};
 	const test::TBox kerb{2.0, 2.2, -2.0, 2.0, 0.0, 0.1};
-	CEvidentialGridMap2D map = makeMap();
-	map.insertObservation(*test::lidarCloud({0.0, {overhang, kerb, wallAhead()}}), CPose3D());
-	EXPECT_EQ(at(map, 3.25, 0.05), Decision::Free);
-	EXPECT_EQ(at(map, 2.15, 0.05), Decision::Free);
-	EXPECT_EQ(at(map, 6.05, 0.05), Decision::Occupied);
+	for (const auto removal : {GroundRemoval::Plane, GroundRemoval::Terrain})
+	{
+		SCOPED_TRACE(static_cast<int>(removal));
+		CEvidentialGridMap2D map = makeMap(removal);
+		map.insertObservation(*test::lidarCloud({0.0, {overhang, kerb, wallAhead()}}), CPose3D());
+		EXPECT_EQ(at(map, 3.25, 0.05), Decision::Free);
+		EXPECT_EQ(at(map, 2.15, 0.05), Decision::Free);
+		EXPECT_EQ(at(map, 6.05, 0.05), Decision::Occupied);
+	}
 	// Lowered below maxObstacleHeight, the overhang is an obstacle.
 	CEvidentialGridMap2D low = makeMap();
 	low.insertionOptions.maxObstacleHeight = 3.5;
@@ -73,15 +77,59 @@ TEST(Clouds, OverhangAndLowKerbAreNotObstacles)
 TEST(Clouds, PlaneRemovesTheGroundOfASlope)
 {
 	const auto cloud = test::lidarCloud({5.0 * kDeg, {}});
-	CEvidentialGridMap2D plane = makeMap(GroundRemoval::Plane);
-	plane.insertObservation(*cloud, CPose3D());
-	EXPECT_EQ(plane.countDecisions().occupied, 0u);
-	EXPECT_GT(plane.countDecisions().free, 10000u);
+	for (const auto removal : {GroundRemoval::Plane, GroundRemoval::Terrain})
+	{
+		SCOPED_TRACE(static_cast<int>(removal));
+		CEvidentialGridMap2D plane = makeMap(removal);
+		plane.insertObservation(*cloud, CPose3D());
+		EXPECT_EQ(plane.countDecisions().occupied, 0u);
+		EXPECT_GT(plane.countDecisions().free, 10000u);
+	}
 	// A fixed band takes the rising ground ahead for obstacles: the test
 	// can tell.
 	CEvidentialGridMap2D band = makeMap(GroundRemoval::Height);
 	band.insertObservation(*cloud, CPose3D());
 	EXPECT_GT(band.countDecisions().occupied, 100u);
+}
+
+TEST(Clouds, TerrainFollowsARampThatThePlaneCannot)
+{
+	// Flat ground out to 15 m ahead, then a 5-degree ramp: the flat ground
+	// all around holds most of the low points, so the plane is its own, and
+	// the ramp rises 0.9 m above it 10 m farther.
+	const test::TBox pole{25.0, 25.3, 0.0, 0.3, 0.0, 10.0};
+	const test::TBox lowBox{-8.0, -7.0, -1.0, 1.0, 0.0, 0.1};
+	const test::TLidarWorld world{5.0 * kDeg, {pole, lowBox}, 15.0};
+	// The ramp's cells from 20 to 29 m, 3 m either side, but the pole's.
+	const auto rampCells = [](const CEvidentialGridMap2D& map, Decision d) {
+		int n = 0;
+		for (double x = 20.05; x < 29.0; x += 0.1)
+			for (double y = -2.95; y < 3.0; y += 0.1)
+				if (std::abs(x - 25.15) > 0.6 && at(map, x, y) == d) ++n;
+		return n;
+	};
+	const auto make = [&](GroundRemoval removal) {
+		CEvidentialGridMap2D map(-30.0, 30.0, -10.0, 10.0, 0.1);
+		map.insertionOptions.groundRemoval = removal;
+		map.insertionOptions.maxRange = 30.0;
+		EXPECT_TRUE(map.insertObservation(*test::lidarCloud(world), CPose3D()));
+		return map;
+	};
+	const CEvidentialGridMap2D plane = make(GroundRemoval::Plane);
+	const CEvidentialGridMap2D terrain = make(GroundRemoval::Terrain);
+	// The plane takes the ramp for obstacles where it rises 0.2 m above the
+	// flat ground, and hides what lies beyond them, the pole too; the
+	// followed ground is free up to the pole, which stays an obstacle.
+	EXPECT_GT(rampCells(plane, Decision::Occupied), 20);
+	EXPECT_GT(rampCells(plane, Decision::Unknown), 1000);
+	EXPECT_EQ(rampCells(terrain, Decision::Occupied), 0);
+	EXPECT_GT(rampCells(terrain, Decision::Free), 4000);
+	EXPECT_EQ(at(plane, 25.05, 0.15), Decision::Unknown);
+	EXPECT_EQ(at(terrain, 25.05, 0.15), Decision::Occupied);
+	// The flat ground and the low box behind the robot read alike.
+	EXPECT_EQ(at(terrain, -7.45, 0.05), Decision::Free);
+	EXPECT_EQ(at(terrain, 10.05, 0.05), Decision::Free);
+	EXPECT_EQ(at(plane, 10.05, 0.05), Decision::Free);
 }
 
 TEST(Clouds, PointsNotFiniteLeaveTheGroundPlaneAlone)
@@ -97,8 +145,8 @@ TEST(Clouds, PointsNotFiniteLeaveTheGroundPlaneAlone)
 	}
 	TGroundFit fit;
 	fit.sensorZ = 1.8;
-	std::vector<int> columns;
-	const auto clean = fitGroundPlane(points, fit, columns);
+	std::vector<int> columns, lowest;
+	const auto clean = fitGroundPlane(points, fit, columns, lowest);
 	ASSERT_TRUE(clean);
 	EXPECT_NEAR(clean->a, std::tan(5.0 * kDeg), 1e-3);
 	// Low enough to pass for ground but for their infinite or NaN
@@ -111,7 +159,7 @@ TEST(Clouds, PointsNotFiniteLeaveTheGroundPlaneAlone)
 	// Whatever the plane's signs, one of these is at a NaN height.
 	points.emplace_back(inf, inf, 0.0f);
 	points.emplace_back(inf, -inf, 0.0f);
-	const auto dirty = fitGroundPlane(points, fit, columns);
+	const auto dirty = fitGroundPlane(points, fit, columns, lowest);
 	ASSERT_TRUE(dirty);
 	EXPECT_EQ(dirty->a, clean->a);
 	EXPECT_EQ(dirty->b, clean->b);

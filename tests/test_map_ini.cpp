@@ -320,7 +320,7 @@ TEST(BadOptions, InvalidInsertionOptionsStopInsertionNamingTheField)
 		{"minObstacleHeight", [](Options& o) { o.minObstacleHeight = kInf; }},
 		{"maxObstacleHeight", [](Options& o) { o.maxObstacleHeight = o.minObstacleHeight; }},
 		{"groundRemoval",
-		 [](Options& o) { o.groundRemoval = static_cast<GroundRemoval>(3); }},
+		 [](Options& o) { o.groundRemoval = static_cast<GroundRemoval>(4); }},
 		{"groundReturns",
 		 [](Options& o) { o.groundReturns = static_cast<GroundReturns>(2); }},
 		{"insertionThreads", [](Options& o) { o.insertionThreads = 0; }},

@@ -82,7 +82,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 	auto& o = map.insertionOptions;
 	o.sensorModel = static_cast<SensorModel>(c.model % 3);
 	o.conflictHandling = static_cast<ConflictHandling>(c.handling % 3);
-	o.groundRemoval = static_cast<GroundRemoval>(c.removal % 3);
+	o.groundRemoval = static_cast<GroundRemoval>(c.removal % 4);
 	o.groundReturns = static_cast<GroundReturns>(c.returns % 2);
 	o.minObstacleHeight = c.minHeight * 0.02;
 	o.maxObstacleHeight = o.minObstacleHeight + (1 + c.heightSpan) * 0.05;

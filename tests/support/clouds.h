@@ -20,12 +20,32 @@ struct TBox
 };
 
 /** The world: a ground plane rising `slope` radians towards +x
- * (z = tan(slope) x), and boxes. */
+ * (z = tan(slope) x), or, with a finite `rampFrom`, flat ground (z = 0) that
+ * rises so from x = rampFrom on; and boxes. */
 struct TLidarWorld
 {
 	double slope = 0.0;
 	std::vector<TBox> boxes;
+	double rampFrom = -std::numeric_limits<double>::infinity();
 };
+
+/** Distance along unit ray (o, d) to the ground of `world`, or +inf. */
+inline double rayToGround(const double o[3], const double d[3], const TLidarWorld& world)
+{
+	const double inf = std::numeric_limits<double>::infinity();
+	const double k = std::tan(world.slope);
+	// The plane z = k (x - x0) the ray meets going down it, if it does.
+	const auto toPlane = [&](double x0) {
+		const double towards = d[2] - k * d[0];
+		return towards < -1e-12 ? (k * (o[0] - x0) - o[2]) / towards : inf;
+	};
+	if (!std::isfinite(world.rampFrom)) return toPlane(0.0);
+	const double flat = d[2] < -1e-12 ? -o[2] / d[2] : inf;
+	const double ramp = toPlane(world.rampFrom);
+	const bool flatHit = flat < inf && o[0] + flat * d[0] < world.rampFrom;
+	const bool rampHit = ramp < inf && ramp >= 0.0 && o[0] + ramp * d[0] >= world.rampFrom;
+	return std::min(flatHit ? flat : inf, rampHit ? ramp : inf);
+}
 
 /** The lidar: `layers` elevations evenly from -15 to +15 degrees, one ray
  * every `azimuthStep` degrees, mounted `height` m above the robot's origin. */
@@ -63,7 +83,6 @@ inline mrpt::obs::CObservationPointCloud::Ptr lidarCloud(
 {
 	auto cloud = mrpt::maps::CSimplePointsMap::Create();
 	const double o[3] = {0.0, 0.0, lidar.height};
-	const double k = std::tan(world.slope);
 	const int columns = static_cast<int>(std::lround(360.0 / lidar.azimuthStep));
 	for (int layer = 0; layer < lidar.layers; ++layer)
 	{
@@ -72,10 +91,7 @@ inline mrpt::obs::CObservationPointCloud::Ptr lidarCloud(
 		{
 			const double a = c * lidar.azimuthStep * M_PI / 180;
 			const double d[3] = {std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e)};
-			// The ground plane z = k x.
-			double t = std::numeric_limits<double>::infinity();
-			const double towards = d[2] - k * d[0];
-			if (towards < -1e-12) t = (k * o[0] - o[2]) / towards;
+			double t = rayToGround(o, d, world);
 			for (const TBox& b : world.boxes) t = std::min(t, rayToBox(o, d, b));
 			if (!(t <= lidar.maxRange)) continue;
 			cloud->insertPoint(

@@ -39,6 +39,7 @@ MRPT_ENUM_TYPE_BEGIN(mrpt_evidential::GroundRemoval)
 MRPT_FILL_ENUM_MEMBER(mrpt_evidential::GroundRemoval, None);
 MRPT_FILL_ENUM_MEMBER(mrpt_evidential::GroundRemoval, Plane);
 MRPT_FILL_ENUM_MEMBER(mrpt_evidential::GroundRemoval, Height);
+MRPT_FILL_ENUM_MEMBER(mrpt_evidential::GroundRemoval, Terrain);
 MRPT_ENUM_TYPE_END()
 
 MRPT_ENUM_TYPE_BEGIN(mrpt_evidential::GroundReturns)

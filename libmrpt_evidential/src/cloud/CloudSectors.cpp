@@ -11,6 +11,7 @@
 #include <string>
 
 #include "cloud/GroundPlane.h"
+#include "cloud/GroundSurface.h"
 
 namespace mrpt_evidential
 {
@@ -27,8 +28,10 @@ struct TClassification
 	float sensorX, sensorY, sensorZ;
 	/** The robot's rotation's first two rows: x and y in the world. */
 	float r00, r01, r02, r10, r11, r12;
-	/** The ground plane, z = a x + b y + c. */
+	/** The ground plane, z = a x + b y + c, and with Terrain the ground's
+	 * height above it per column (CGroundSurface). */
 	float a = 0.0f, b = 0.0f, c = 0.0f;
+	const float* surface = nullptr;
 	/** Obstacles lie between these heights above the ground (+-inf without
 	 * ground removal). */
 	float minHeight, maxHeight;
@@ -41,10 +44,14 @@ struct TClassification
  * points, three floats each. In float, as the points are: eight lanes at a
  * time with AVX2, where double precision took four, for ranges within a
  * part in 1e7 of the double's (the points' own precision). */
+template <bool Terrain>
 MRPT_EVIDENTIAL_CPU_CLONES void classify(
 	const float* xyz, std::size_t n, const TClassification& k, std::uint32_t* codes,
 	double* ranges)
 {
+	constexpr auto reach = static_cast<float>(kGroundReach);
+	constexpr auto perColumn = static_cast<float>(1 / kGroundColumn);
+	constexpr int side = kGroundColumns;
 	constexpr float kNoReturn2 = static_cast<float>(kNoReturnDistance * kNoReturnDistance);
 	for (std::size_t i = 0; i < n; ++i)
 	{
@@ -54,7 +61,16 @@ MRPT_EVIDENTIAL_CPU_CLONES void classify(
 		// overflows (1e19 m) counts as not finite.
 		const float d2 = dx0 * dx0 + dy0 * dy0 + dz0 * dz0;
 		const bool dropped = !(d2 >= kNoReturn2 && d2 <= FLT_MAX);
-		const float h = z - (k.a * x + k.b * y + k.c);
+		float base = k.a * x + k.b * y + k.c;
+		if constexpr (Terrain)
+		{
+			// The nearest column's; NaN (a dropped point) takes the first.
+			const float ux = (x + reach) * perColumn, uy = (y + reach) * perColumn;
+			const float fx = ux >= 0.0f ? std::min(ux, side - 1.0f) : 0.0f;
+			const float fy = uy >= 0.0f ? std::min(uy, side - 1.0f) : 0.0f;
+			base += k.surface[static_cast<int>(fy) * side + static_cast<int>(fx)];
+		}
+		const float h = z - base;
 		const bool above = h > k.maxHeight, ground = !(h >= k.minHeight);
 		const float dx = k.r00 * dx0 + k.r01 * dy0 + k.r02 * dz0;
 		const float dy = k.r10 * dx0 + k.r11 * dy0 + k.r12 * dz0;
@@ -91,15 +107,23 @@ TCloudCounts sortCloudIntoSectors(
 	out.reset(sectors);
 
 	TClassification k;
-	if (rules.groundRemoval == GroundRemoval::Plane)
+	const bool terrain = rules.groundRemoval == GroundRemoval::Terrain;
+	if (rules.groundRemoval == GroundRemoval::Plane || terrain)
 	{
 		TGroundFit fit;
 		fit.sensorZ = sensor.z;
 		// Else the robot's base plane (z = 0).
-		if (const auto plane = fitGroundPlane(points, fit, scratch.columns))
+		TGroundPlane base;
+		if (const auto plane = fitGroundPlane(points, fit, scratch.columns, scratch.lowest))
 		{
 			k.a = static_cast<float>(plane->a), k.b = static_cast<float>(plane->b);
 			k.c = static_cast<float>(plane->c), counts.planeFound = true;
+			base = *plane;
+		}
+		if (terrain)
+		{
+			scratch.surface.follow(points, scratch.lowest, base, sensor.x, sensor.y);
+			k.surface = scratch.surface.heights();
 		}
 	}
 	const bool removal = rules.groundRemoval != GroundRemoval::None;
@@ -117,7 +141,10 @@ TCloudCounts sortCloudIntoSectors(
 	const std::size_t n = points.size();
 	scratch.codes.resize(n);
 	scratch.ranges.resize(n);
-	classify(n ? &points[0].x : nullptr, n, k, scratch.codes.data(), scratch.ranges.data());
+	if (terrain)
+		classify<true>(n ? &points[0].x : nullptr, n, k, scratch.codes.data(), scratch.ranges.data());
+	else
+		classify<false>(n ? &points[0].x : nullptr, n, k, scratch.codes.data(), scratch.ranges.data());
 
 	const bool groundIsFree = rules.groundReturns == GroundReturns::FreeSpace;
 	for (std::size_t i = 0; i < n; ++i)

@@ -12,6 +12,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "cloud/GroundSurface.h"
+
 namespace mrpt_evidential
 {
 /** How a cloud is read, from the map's insertion options. */
@@ -36,7 +38,8 @@ struct TCloudCounts
 	 * drivers put returns they did not get). */
 	std::size_t dropped = 0;
 	std::size_t ground = 0, obstacles = 0, aboveRobot = 0;
-	/** GroundRemoval::Plane found a plane (else the base plane was used). */
+	/** GroundRemoval::Plane or Terrain found a plane (else the base plane
+	 * was used). */
 	bool planeFound = false;
 };
 
@@ -59,7 +62,9 @@ struct TCloudScratch
 	std::vector<std::uint32_t> codes;
 	std::vector<double> ranges;
 	/** The ground plane's fit's (fitGroundPlane()). */
-	std::vector<int> columns;
+	std::vector<int> columns, lowest;
+	/** The ground followed over the terrain (GroundRemoval::Terrain). */
+	CGroundSurface surface;
 };
 
 /** Fills `out` with the cloud's returns: each obstacle point an impact of

@@ -13,10 +13,10 @@ namespace mrpt_evidential
 {
 namespace
 {
-/** RANSAC draws from the lowest candidate of each column of kColumn metres
- * within kColumnReach of the robot: mostly ground, even where the ground is
- * a small share of the points (walls and crowns stand on it). */
-constexpr double kColumn = 1.0, kColumnReach = 40.0;
+/** RANSAC draws from the lowest candidate of each column: mostly ground,
+ * even where the ground is a small share of the points (walls and crowns
+ * stand on it). */
+constexpr double kColumn = kGroundColumn, kColumnReach = kGroundReach;
 /** RANSAC's tries at most: with ground in 40 % of the columns and more, the
  * chance that no try draws three ground points is below kMissRisk. The
  * search stops sooner once the best plane's share of the columns makes that
@@ -139,8 +139,9 @@ void columnsOf(
 
 MRPT_EVIDENTIAL_CPU_CLONES std::optional<TGroundPlane> fitGroundPlane(
 	const std::vector<mrpt::math::TPoint3Df>& points, const TGroundFit& fit,
-	std::vector<int>& columns)
+	std::vector<int>& columns, std::vector<int>& lowest)
 {
+	lowest.clear();
 	// Ground can only be low: below the sensor by the mounting heights, give
 	// or take the steepest slope's rise.
 	const double slope = std::tan(fit.maxSlope);
@@ -155,7 +156,7 @@ MRPT_EVIDENTIAL_CPU_CLONES std::optional<TGroundPlane> fitGroundPlane(
 	constexpr auto side = static_cast<std::size_t>(2 * kColumnReach / kColumn);
 	// Each column's lowest height beside its point: no lookup through the
 	// points.
-	std::vector<int> lowest(side * side, -1);
+	lowest.assign(side * side, -1);
 	std::vector<float> lowestZ(side * side, HUGE_VALF);
 	for (std::size_t i = 0; i < points.size(); ++i)
 	{

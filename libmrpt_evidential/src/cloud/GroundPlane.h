@@ -52,10 +52,19 @@ struct TGroundFit
  * its points below the sensor, so a car's roof rarely competes. `points` are in the robot's
  * frame; the search is deterministic (fixed seed). Points that are not
  * finite are never ground. `columns` is storage for one int a point, kept
- * by the caller so that it is not allocated for each cloud. Never throws
- * but std::bad_alloc. */
+ * by the caller so that it is not allocated for each cloud; `lowest` gets
+ * the index of each column's lowest candidate (kGroundColumns^2 of them,
+ * row by row from (-kGroundReach, -kGroundReach), -1 for none; empty when
+ * there are too few candidates for a plane). Never throws but
+ * std::bad_alloc. */
 std::optional<TGroundPlane> fitGroundPlane(
 	const std::vector<mrpt::math::TPoint3Df>& points, const TGroundFit& fit,
-	std::vector<int>& columns);
+	std::vector<int>& columns, std::vector<int>& lowest);
+
+/** The columns of fitGroundPlane() and CGroundSurface: 1 m square, within
+ * kGroundReach metres of the robot's origin along x and y. */
+constexpr double kGroundColumn = 1.0, kGroundReach = 40.0;
+constexpr int kGroundColumns = static_cast<int>(2 * kGroundReach / kGroundColumn);
+
 
 }  // namespace mrpt_evidential

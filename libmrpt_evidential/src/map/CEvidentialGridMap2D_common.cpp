@@ -387,7 +387,7 @@ void TEvidentialInsertionOptions::saveToConfigFile(
 	writeValue(target, section, "motionClearance", motionClearance,
 			   "m from static structure below which a change is pose error");
 	writeValue(target, section, "groundRemoval", groundRemoval,
-			   "3-D clouds' ground: Plane, Height or None");
+			   "3-D clouds' ground: Plane, Terrain, Height or None");
 	writeValue(target, section, "minObstacleHeight", minObstacleHeight,
 			   "m above the ground where a cloud's obstacles begin");
 	writeValue(target, section, "maxObstacleHeight", maxObstacleHeight,

@@ -16,7 +16,12 @@ enum class GroundRemoval
 	 * plane (z = 0 in its frame) when no plane is found. */
 	Plane,
 	/** The robot's base plane, always: a fixed band of heights. */
-	Height
+	Height,
+	/** The plane of Plane, bent to follow the terrain outwards from the
+	 * sensor where the ground rises or falls away from it (a hill ahead, a
+	 * crest, a ramp beside flat ground), by at most 10 degrees from one
+	 * metre to the next. */
+	Terrain
 };
 
 /** What a ground return (a point below minObstacleHeight) proves. */
