@@ -100,12 +100,12 @@ struct TEvidentialInsertionOptions : public mrpt::config::CLoadableOptions
 	double motionClearance = 0.10;
 	/** 3-D clouds (CObservationPointCloud, CObservationVelodyneScan,
 	 * CObservation3DRangeScan): `groundRemoval`, where the ground lies:
-	 * Plane (default: fitted to each cloud, the robot's base plane when
-	 * none is found), Terrain (that plane bent to follow the ground where
-	 * it rises or falls away from it: a hill ahead, a crest), Height (the
-	 * robot's base plane, z = 0 in its frame) or None (no ground: every
-	 * point is an obstacle). */
-	GroundRemoval groundRemoval = GroundRemoval::Plane;
+	 * Terrain (default: a plane fitted to each cloud, the robot's base
+	 * plane when none is found, bent to follow the ground where it rises
+	 * or falls away from it: a hill ahead, a crest), Plane (that plane
+	 * alone), Height (the robot's base plane, z = 0 in its frame) or None
+	 * (no ground: every point is an obstacle). */
+	GroundRemoval groundRemoval = GroundRemoval::Terrain;
 	/** `minObstacleHeight`, `maxObstacleHeight`: a cloud's points from
 	 * min to max metres above the ground are obstacles; lower ones are
 	 * ground, higher ones (above the robot: branches, a barrier)

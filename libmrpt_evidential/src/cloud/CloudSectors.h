@@ -19,7 +19,7 @@ namespace mrpt_evidential
 /** How a cloud is read, from the map's insertion options. */
 struct TCloudRules
 {
-	GroundRemoval groundRemoval = GroundRemoval::Plane;
+	GroundRemoval groundRemoval = GroundRemoval::Terrain;
 	/** Heights above the ground, metres: points from min up to max are
 	 * obstacles, lower ones ground, higher ones nothing. */
 	double minObstacleHeight = 0.2, maxObstacleHeight = 2.0;
