@@ -34,20 +34,22 @@ contains "$s" "clouds: 1 3-D clouds: 1 inserted, 0 without a pose, 0 refused by 
 #    obstacles read occupied, the ground, the kerbs and the gantry do not (the
 #    ground's share holds the cells the people and the car crossed).
 street="$(dirname "$EVGRID_INI")/street_vlp16"
-# The same with the ground followed over the terrain (groundRemoval=Terrain).
-sed 's/^groundRemoval=.*/groundRemoval=Terrain/' "$EVGRID_INI" >"$T/terrain.ini"
-grep -q '^groundRemoval=Terrain' "$T/terrain.ini" || fail "evgrid.ini has no groundRemoval key"
+# Each ground removal that fits a plane: evgrid.ini's (Terrain, the ground
+# followed over the hill) and Plane.
 for removal in Plane Terrain; do
-  ini="$EVGRID_INI"
-  [ "$removal" = Terrain ] && ini="$T/terrain.ini"
-  run 0 "$EVGRID" build -c "$ini" -i "$street.rawlog" -p "$street.slam.txt" -o "$T/street-$removal"
+  sed "s/^groundRemoval=.*/groundRemoval=$removal/" "$EVGRID_INI" >"$T/$removal.ini"
+  grep -q "^groundRemoval=$removal\$" "$T/$removal.ini" || fail "evgrid.ini has no groundRemoval key"
+done
+share() { awk -v c="$1" '$1 == c { print $3 }' "$T/street.footprint.txt"; }
+seen() { awk -v c="$1" '$1 == c { print $2 }' "$T/street.footprint.txt"; }
+for removal in Plane Terrain; do
+  run 0 "$EVGRID" build -c "$T/$removal.ini" -i "$street.rawlog" -p "$street.slam.txt" -o "$T/street-$removal"
   contains "$T/street-$removal/summary.txt" "clouds: 30 3-D clouds: 30 inserted, 0 without a pose, 0 refused by the map (30 mrpt::obs::CObservationPointCloud)"
+  contains "$T/street-$removal/summary.txt" "groundRemoval = $removal "
   run 0 "$EVGRID_CHECK" footprint "$T/street-$removal/map.evgrid" "$street.footprint.gz"
   cp "$OUT" "$T/street.footprint.txt"
   echo "$removal:"
   cat "$T/street.footprint.txt"
-  share() { awk -v c="$1" '$1 == c { print $3 }' "$T/street.footprint.txt"; }
-  seen() { awk -v c="$1" '$1 == c { print $2 }' "$T/street.footprint.txt"; }
   for cls in ground obstacle low overhang; do
     [ "$(seen $cls)" -gt 1000 ] || fail "street ($removal): only $(seen $cls) $cls cells seen"
   done

@@ -4,6 +4,7 @@
 
 #include <mrpt/math/TPoint3D.h>
 
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -65,6 +66,15 @@ std::optional<TGroundPlane> fitGroundPlane(
  * kGroundReach metres of the robot's origin along x and y. */
 constexpr double kGroundColumn = 1.0, kGroundReach = 40.0;
 constexpr int kGroundColumns = static_cast<int>(2 * kGroundReach / kGroundColumn);
+
+/** The column along one axis of a coordinate of the robot's frame, clamped
+ * to the columns (the loops over every point work it out without a branch,
+ * in their own precision). */
+inline int groundColumnOf(double v)
+{
+	const double f = std::floor((v + kGroundReach) / kGroundColumn);
+	return f < 0.0 ? 0 : f >= kGroundColumns ? kGroundColumns - 1 : static_cast<int>(f);
+}
 
 
 }  // namespace mrpt_evidential

@@ -15,11 +15,7 @@ void CGroundSurface::follow(
 	constexpr int side = kGroundColumns;
 	m_ground.assign(side * side, 0.0f);
 	m_slack.assign(side * side, 0.0f);
-	const auto columnOf = [](double v) {
-		return std::clamp(
-			static_cast<int>(std::floor((v + kGroundReach) / kGroundColumn)), 0, side - 1);
-	};
-	const int sx = columnOf(sensorX), sy = columnOf(sensorY);
+	const int sx = groundColumnOf(sensorX), sy = groundColumnOf(sensorY);
 	const auto ringOf = [&](int x, int y) { return std::max(std::abs(x - sx), std::abs(y - sy)); };
 	const auto settle = [&](int c, float inner, float slack) {
 		const int i = lowest.empty() ? -1 : lowest[static_cast<std::size_t>(c)];
@@ -30,16 +26,16 @@ void CGroundSurface::follow(
 		m_slack[c] = ground ? 0.0f : std::min(slack + kStep, kMaxStray);
 	};
 	// The inner neighbours of (x, y) on ring r: the next column towards the
-	// sensor, in the row or the column that crosses ring r there (the
-	// corner's one diagonal neighbour).
+	// sensor, in the row or the column that crosses ring r there.
 	const auto visit = [&](int x, int y, int r) {
 		if (x < 0 || y < 0 || x >= side || y >= side) return;
 		const int dx = x - sx, dy = y - sy;
 		const int ix = std::abs(dx) == r ? x - (dx > 0 ? 1 : -1) : x;
 		const int iy = std::abs(dy) == r ? y - (dy > 0 ? 1 : -1) : y;
-		// Along the other axis the neighbours either side count too, where
-		// they lie within ring r - 1.
+		// Along the side's own axis the neighbours either side count too,
+		// where they lie within ring r - 1; a corner has the diagonal one.
 		const bool alongX = ix == x, alongY = iy == y;
+		const int spread = alongX || alongY ? 1 : 0;
 		float inner = 0.0f, slack = kMaxStray + 1.0f;
 		int count = 0;
 		const auto take = [&](int nx, int ny) {
@@ -50,7 +46,7 @@ void CGroundSurface::follow(
 			else if (m_slack[n] == slack)
 				inner += m_ground[n], ++count;
 		};
-		for (int k = -1; k <= 1; ++k) take(alongX ? ix + k : ix, alongY ? iy + k : iy);
+		for (int k = -spread; k <= spread; ++k) take(alongX ? ix + k : ix, alongY ? iy + k : iy);
 		settle(y * side + x, inner / static_cast<float>(count), slack);
 	};
 	// The sensor's column: the plane, give or take a step.
