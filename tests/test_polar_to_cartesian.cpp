@@ -37,6 +37,20 @@ void setUpPreciseScan(
 	transform.setup(polar, PlanarSensorPose{0, 0, 0, false});
 }
 
+/** The free mass of each cell that `transform` informs in `grid`. */
+std::map<std::size_t, double> freeMassOfInformedCells(
+	CPolarToCartesian& transform, const GridGeometry& grid)
+{
+	std::map<std::size_t, double> freeMass;
+	transform.forEachInformedCell(
+		grid, [&](std::size_t idx, const Mass& m) { freeMass[idx] = m.free; },
+		[&](std::size_t first, std::size_t count) {
+			for (std::size_t idx = first; idx < first + count; ++idx)
+				freeMass[idx] = transform.uniformMass().free;
+		});
+	return freeMass;
+}
+
 /** The free margin along sector s's beam, from the definition: freeMargin
  * across the surface its nearest impact lies on, the surface's slope taken
  * from the nearest impacts two sectors away on the flatter side, the
@@ -68,7 +82,8 @@ double referenceMargin(const CPolarSourceGrid& polar, std::size_t s)
 /** The bilinear mix at a point of the sensor's frame, straight from the
  * definition; vacuous outside the field of view and beyond reach. */
 Mass referenceMix(
-	const CPolarSourceGrid& polar, double lx, double ly, bool* onCentreLine = nullptr)
+	const CPolarSourceGrid& polar, double lx, double ly, bool* onCentreLine = nullptr,
+	bool* onMiddle = nullptr)
 {
 	const std::size_t n = polar.sectorCount(), nBins = polar.binCount();
 	const double spacing = polar.sectorSpacing();
@@ -87,6 +102,12 @@ Mass referenceMix(
 				 : (s0 = s1 = n - 1, ws = 0);
 	else
 		s0 = static_cast<std::size_t>(sp), s1 = s0 + 1, ws = sp - std::floor(sp);
+	// A sector without evidence is mixed with nothing: each sector holds its
+	// own half of the gap whole.
+	const bool nearestOnly =
+		s0 != s1 && (polar.informedBins(s0) == 0) != (polar.informedBins(s1) == 0);
+	const double wsBefore = ws;
+	if (nearestOnly) ws = ws < 0.5 ? 0.0 : 1.0;
 	const double r = std::hypot(lx, ly);
 	const double reach = (static_cast<double>(std::max(
 							  polar.informedBins(s0), polar.informedBins(s1))) + 0.5) *
@@ -125,7 +146,10 @@ Mass referenceMix(
 	if (r >= std::min(limit(s0), limit(s1))) touchesImpact = true;
 	// Within a hair of a centre line (the transform's angles are within
 	// 2e-6 rad) the neighbour of almost no weight may be either side's.
-	if (onCentreLine) *onCentreLine = std::min(ws, 1 - ws) < 1e-3;
+	if (onCentreLine) *onCentreLine = std::min(wsBefore, 1 - wsBefore) < 1e-3;
+	// A cell within a hair of the middle of a gap beside a sector without
+	// evidence may take either sector.
+	if (onMiddle) *onMiddle = nearestOnly && std::abs(wsBefore - 0.5) < 1e-3;
 	if (touchesImpact) m.unknown += m.free, m.free = 0;
 	return m;
 }
@@ -195,9 +219,14 @@ void expectMatchesReference(
 			const double lx = std::cos(sensor.yaw) * dx + std::sin(sensor.yaw) * dy;
 			double ly = -std::sin(sensor.yaw) * dx + std::cos(sensor.yaw) * dy;
 			if (sensor.mirrored) ly = -ly;
-			bool onCentreLine = false;
-			const Mass expected = referenceMix(polar, lx, ly, &onCentreLine);
+			bool onCentreLine = false, onMiddle = false;
+			const Mass expected = referenceMix(polar, lx, ly, &onCentreLine, &onMiddle);
 			const auto it = seen.find(g.index(cx, cy));
+			if (onMiddle)
+			{
+				informed += it != seen.end();
+				continue;
+			}
 			// fastAtan2 is within 2e-6 rad: cells on an edge of the
 			// field of view or of reach may fall either way, with a
 			// mix too small to matter.
@@ -370,6 +399,41 @@ TEST(PolarToCartesian, LeavesOutOnlyVacuousCellsBetweenNearAndFarSectors)
 	}
 }
 
+TEST(PolarToCartesian, ABeamWithoutAReturnIsMixedWithNothing)
+{
+	// Beams every 5 degrees to a ring 3 m away, the one straight ahead
+	// without a return: each informed sector holds its own span whole, out
+	// to the middle of the gap, and the silent beam's span stays unknown. A
+	// mix would have given 3.5 degrees 0.7 of the free mass and 1.5 degrees
+	// 0.3 of it.
+	CPolarSourceGrid polar;
+	CPolarToCartesian transform;
+	setUpPreciseScan(polar, transform, 37, M_PI, 0.0, [](double a) {
+		return std::abs(a) < 1e-6 ? 0.0 : 3.0;
+	});
+	ASSERT_FALSE(polar.sectorObserved(18));
+	EvidentialGridStorage grid;
+	grid.reset(-1, 4, -4, 4, 0.025, 1'000'000);
+	const GridGeometry& g = grid.geometry();
+	std::map<std::size_t, double> freeMass = freeMassOfInformedCells(transform, g);
+	const double free = transform.uniformMass().free;
+	ASSERT_GT(free, 0.5);
+	for (const double range : {1.0, 2.0})
+		for (const double side : {1.0, -1.0})
+		{
+			const auto cellAt = [&](double degrees) {
+				const double a = side * degrees * M_PI / 180;
+				return g.index(g.cellX(range * std::cos(a)), g.cellY(range * std::sin(a)));
+			};
+			SCOPED_TRACE(testing::Message() << range << " m, side " << side);
+			EXPECT_EQ(freeMass.count(cellAt(1.5)), 0u) << "the silent beam's span";
+			ASSERT_EQ(freeMass.count(cellAt(3.5)), 1u);
+			EXPECT_DOUBLE_EQ(freeMass[cellAt(3.5)], free) << "the informed span, whole";
+		}
+	// Nor does the silent span count as crossed (the motion layer's test).
+	EXPECT_FALSE(transform.crossedWithoutFreeEvidence(2.0, 0.02));
+}
+
 TEST(PolarToCartesian, FreeMarginHoldsAcrossAWallAtAnyIncidence)
 {
 	// A straight wall 3 m ahead, beams every half degree: the cells within
@@ -384,13 +448,7 @@ TEST(PolarToCartesian, FreeMarginHoldsAcrossAWallAtAnyIncidence)
 	EvidentialGridStorage grid;
 	grid.reset(-1, 4, -6, 6, 0.025, 1'000'000);
 	const GridGeometry& g = grid.geometry();
-	std::map<std::size_t, double> freeMass;
-	transform.forEachInformedCell(
-		g, [&](std::size_t idx, const Mass& m) { freeMass[idx] = m.free; },
-		[&](std::size_t first, std::size_t count) {
-			for (std::size_t idx = first; idx < first + count; ++idx)
-				freeMass[idx] = transform.uniformMass().free;
-		});
+	std::map<std::size_t, double> freeMass = freeMassOfInformedCells(transform, g);
 	const auto freeAt = [&](double x, double y) {
 		const auto it = freeMass.find(g.index(g.cellX(x), g.cellY(y)));
 		return it == freeMass.end() ? 0.0 : it->second;

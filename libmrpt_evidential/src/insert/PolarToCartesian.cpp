@@ -101,9 +101,21 @@ void forEachGap(const CPolarSourceGrid& polar, Fn&& fn)
 	if (!polar.fullTurn()) fn(n - 1, n - 1, n, 0.5 * spacing);
 }
 
+/** The radius of an outline over a gap's two halves, up to and from its
+ * middle: the same for most gaps, not beside a sector without evidence. */
+struct TGapRadius
+{
+	double lo, hi;
+	TGapRadius(double both) : lo(both), hi(both) {}
+	TGapRadius(double first, double second) : lo(first), hi(second) {}
+};
+
 /** Builds the outline of a region made of one radius per gap between sector
  * centres (and per half sector at the ends of a scan that is not a full
- * turn): radiusOf(lo, hi) for the gap between sectors lo and hi. Arcs become
+ * turn): radiusOf(lo, hi) for the gap between sectors lo and hi, a
+ * TGapRadius (a gap whose halves differ splits at its middle, turned by
+ * kCentreLineSlack into the longer half for an outline inside the region,
+ * into the shorter one for an outline that holds it). Arcs become
  * chords of at most 22.5 degrees, pushed out far enough to hold the arc when
  * `outside` (an outline that must hold the region; otherwise it must stay
  * inside it); a radius of 0 puts the sensor itself in the outline.
@@ -135,10 +147,11 @@ void outline(
 		const double c = std::cos(dir * angle), s = std::sin(dir * angle);
 		return std::pair<double, double>{c * cx - s * cy, s * cx + c * cy};
 	};
-	const auto addArc = [&](double radius, double flank, std::size_t i,
-							std::size_t j, double width) {
-		double cx = directions[2 * i], cy = directions[2 * i + 1];
-		double ex = directions[2 * j], ey = directions[2 * j + 1];
+	// The arc from entry i to entry j of `dirs` (x, y pairs).
+	const auto addArcIn = [&](const double* dirs, double radius, double flank,
+							  std::size_t i, std::size_t j, double width) {
+		double cx = dirs[2 * i], cy = dirs[2 * i + 1];
+		double ex = dirs[2 * j], ey = dirs[2 * j + 1];
 		if (flank > 0.0)
 		{
 			// Out to the flank along the start, across the strip, and the
@@ -173,14 +186,32 @@ void outline(
 		if (flank > 0.0)
 		{
 			addPoint(sensor.x + flank * ex, sensor.y + flank * ey);
-			addPoint(
-				sensor.x + flank * directions[2 * j], sensor.y + flank * directions[2 * j + 1]);
+			addPoint(sensor.x + flank * dirs[2 * j], sensor.y + flank * dirs[2 * j + 1]);
 		}
+	};
+	const auto addArc = [&](double radius, double flank, std::size_t i, std::size_t j,
+							double width) {
+		addArcIn(directions.data(), radius, flank, i, j, width);
 	};
 	// A scan that is not a full turn starts and ends at the sensor.
 	if (!polar.fullTurn()) addPoint(sensor.x, sensor.y);
 	forEachGap(polar, [&](std::size_t lo, std::size_t hi, std::size_t i, double width) {
-		addArc(radiusOf(lo, hi), flankOf(lo, hi), i, i + 1, width);
+		const TGapRadius radius = radiusOf(lo, hi);
+		if (radius.lo == radius.hi)
+		{
+			addArc(radius.lo, flankOf(lo, hi), i, i + 1, width);
+			return;
+		}
+		// The gap's start, its split and its end.
+		double splitDirections[6];
+		const bool towardsHi = (radius.lo < radius.hi) != outside;
+		const double half = 0.5 * width + (towardsHi ? kCentreLineSlack : -kCentreLineSlack);
+		std::copy_n(&directions[2 * i], 2, splitDirections);
+		std::tie(splitDirections[2], splitDirections[3]) =
+			turned(directions[2 * i], directions[2 * i + 1], half);
+		std::copy_n(&directions[2 * i + 2], 2, splitDirections + 4);
+		addArcIn(splitDirections, radius.lo, 0.0, 0, 1, half);
+		addArcIn(splitDirections, radius.hi, 0.0, 1, 2, width - half);
 	});
 }
 }  // namespace
@@ -257,11 +288,12 @@ void CPolarToCartesian::setup(
 	const auto constantFree = [](const SectorSpan& span) {
 		return span.reach2 <= 0.0 ? 0.0 : span.freeMass;
 	};
-	m_gapMixes.assign(n + 1, GapMix{0.0, 0.0, 0.0, VacuousBand{}});
+	m_gapMixes.assign(n + 1, GapMix{0.0, 0.0, 0.0, VacuousBand{}, false});
 	forEachGap(polar, [&](std::size_t lo, std::size_t hi, std::size_t i, double) {
 		GapMix& gap = m_gapMixes[i];
 		gap.vacuous = vacuousBand(lo, hi);
 		if (lo == hi) return;  // a half gap: the sector alone, no mix
+		gap.nearestOnly = nearestOnly(lo, hi);
 		const SectorSpan &a = m_sectorSpans[lo], &b = m_sectorSpans[hi];
 		const double limit = std::min(a.freeLimit, b.freeLimit);
 		gap.simpleEnd2 = std::min({constantTo2(a), constantTo2(b), limit * limit});
@@ -272,17 +304,20 @@ void CPolarToCartesian::setup(
 	if (polar.fullTurn()) m_gapMixes[0] = m_gapMixes[n];
 
 	// Between two sector centres the mix reaches as far as the longer
-	// sector; before the first and after the last centre, the sector alone.
-	outline(
-		m_polygon, &m_box, polar, sensor, m_directions, true,
-		[&](std::size_t lo, std::size_t hi) {
-			return std::sqrt(std::max(m_sectorSpans[lo].reach2, m_sectorSpans[hi].reach2));
-		});
+	// sector; before the first and after the last centre, and on the half of
+	// a gap beside a sector without evidence, the sector alone.
+	const auto reachOf = [&](std::size_t lo, std::size_t hi) {
+		const SectorSpan &a = m_sectorSpans[lo], &b = m_sectorSpans[hi];
+		return nearestOnly(lo, hi)
+			? TGapRadius(std::sqrt(a.reach2), std::sqrt(b.reach2))
+			: TGapRadius(std::sqrt(std::max(a.reach2, b.reach2)));
+	};
+	outline(m_polygon, &m_box, polar, sensor, m_directions, true, reachOf);
 	// The area the scan informs bounds that of its vacuous bands, which
 	// prepareRows() works out only when the bound holds enough cells.
 	forEachGap(polar, [&](std::size_t lo, std::size_t hi, std::size_t, double width) {
-		m_informedArea +=
-			0.5 * width * std::max(m_sectorSpans[lo].reach2, m_sectorSpans[hi].reach2);
+		const TGapRadius r = reachOf(lo, hi);
+		m_informedArea += 0.25 * width * (r.lo * r.lo + r.hi * r.hi);
 	});
 
 	// A cloud's farther impacts lie beyond the polygon; the grid must grow
@@ -334,7 +369,9 @@ void CPolarToCartesian::setup(
 	outline(
 		m_uniformPolygon, nullptr, polar, sensor, m_directions, false,
 		[&](std::size_t lo, std::size_t hi) {
-			return std::min(m_uniformReach[lo], m_uniformReach[hi]);
+			return nearestOnly(lo, hi)
+				? TGapRadius(m_uniformReach[lo], m_uniformReach[hi])
+				: TGapRadius(std::min(m_uniformReach[lo], m_uniformReach[hi]));
 		});
 }
 
@@ -374,8 +411,9 @@ double CPolarToCartesian::vacuousArea() const
 	// nothing from the nearer one's free limit to the farther one's impacts.
 	double area = 0.0;
 	forEachGap(*m_polar, [&](std::size_t, std::size_t, std::size_t i, double width) {
-		const VacuousBand& band = m_gapMixes[i].vacuous;
-		area += 0.5 * width * (band.to2 - band.from2);
+		// Beside a sector without evidence, the band lies on the other half.
+		const GapMix& gap = m_gapMixes[i];
+		area += (gap.nearestOnly ? 0.25 : 0.5) * width * (gap.vacuous.to2 - gap.vacuous.from2);
 	});
 	return area;
 }
@@ -394,12 +432,19 @@ bool CPolarToCartesian::crossedWithoutFreeEvidence(double x, double y) const
 	// that passes beside a thing standing in part of the cell is not a
 	// crossing of the cell, but one that stopped well short of it, at
 	// something else, says nothing of the cell either way.
-	const auto ns = detail::neighbours(
-		angle * m_invSpacing - 0.5, m_polar->sectorCount(), m_polar->fullTurn());
+	const double position = angle * m_invSpacing - 0.5;
+	const auto ns =
+		detail::neighbours(position, m_polar->sectorCount(), m_polar->fullTurn());
+	// Beside a sector without evidence, the nearer sector alone.
+	const std::size_t sectors[2] = {ns.lo, ns.hi};
+	const GapMix& gap = m_gapMixes[static_cast<std::size_t>(position + 1.0)];
+	const bool hiAlone = gap.nearestOnly && nearestWeight(gap, ns.wHi) == 1.0;
+	const std::size_t count = gap.nearestOnly ? 1 : 2;
 	const double range = std::sqrt(range2), bin = m_polar->binSize();
 	bool crossed = false, withheld = false;
-	for (const std::size_t s : {ns.lo, ns.hi})
+	for (std::size_t k = 0; k < count; ++k)
 	{
+		const std::size_t s = sectors[hiAlone ? 1 : k];
 		const std::vector<double>& impacts = m_polar->impacts(s);
 		if (impacts.empty()) return false;
 		// A bin short of the impact the beam has crossed the point: a thing

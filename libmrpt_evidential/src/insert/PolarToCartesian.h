@@ -110,7 +110,9 @@ void forEachPieceOutside(
 
 /** Places a polar SourceGrid at a sensor pose and visits the grid cells it
  * informs, each once, with the bilinear mix of the four polar cells around
- * the cell's centre (two sectors, two bins).
+ * the cell's centre (two sectors, two bins). A sector without evidence (a
+ * beam without a return) is mixed with nothing: each sector holds its own
+ * span, out to the middle of the gap, whole (doc/sensor-models.md).
  *
  * Only the cells that can receive evidence are looked at: the region a scan
  * informs (between two sector centres, up to the longer of the two sectors'
@@ -303,10 +305,27 @@ class CPolarToCartesian
 		double loFree, hiFree;
 		/** The gap's vacuous band (vacuousBand()). */
 		VacuousBand vacuous;
+		/** True beside a sector without evidence (a beam without a return):
+		 * each half of the gap then holds its own sector alone, unmixed. */
+		bool nearestOnly;
 	};
 	/** Indexed by the whole part of a cell's sector position + 1, as
 	 * detail::neighbours() takes it: n + 1 entries. */
 	std::vector<GapMix> m_gapMixes;
+	/** The weight of a gap's second sector: `w` itself, or in a gap
+	 * beside a sector without evidence that of the nearer sector alone (the
+	 * second from the gap's middle on). */
+	static double nearestWeight(const GapMix& gap, double w)
+	{
+		return gap.nearestOnly ? (w < 0.5 ? 0.0 : 1.0) : w;
+	}
+	/** True for a gap between two sectors (not a half gap at an end) of
+	 * which one has no evidence: GapMix::nearestOnly, from the spans. */
+	bool nearestOnly(std::size_t lo, std::size_t hi) const
+	{
+		return lo != hi &&
+			(m_sectorSpans[lo].reach2 <= 0.0) != (m_sectorSpans[hi].reach2 <= 0.0);
+	}
 	/** The area of all the gaps' vacuous bands (m^2): when it holds enough
 	 * cells, prepareRows() outlines them and the visit leaves them out. */
 	double vacuousArea() const;
@@ -353,21 +372,20 @@ inline bool CPolarToCartesian::mixAt(
 	const CPolarSourceGrid& polar = *m_polar;
 	if (angle >= m_span) return false;  // outside the field of view
 	const double position = angle * m_invSpacing - 0.5;
+	// The weight as detail::neighbours() works it out, bit for bit.
+	const double shifted = position + 1.0;
+	const auto whole = static_cast<std::size_t>(shifted);
+	const GapMix& gap = m_gapMixes[whole];
+	if (range2 < gap.simpleEnd2)
 	{
-		// The weight as detail::neighbours() works it out, bit for bit.
-		const double shifted = position + 1.0;
-		const auto whole = static_cast<std::size_t>(shifted);
-		const GapMix& gap = m_gapMixes[whole];
-		if (range2 < gap.simpleEnd2)
-		{
-			const double w = shifted - static_cast<double>(whole);
-			const double free = (1 - w) * gap.loFree + w * gap.hiFree;
-			observed = Mass::simpleFree(free);
-			return free > 1e-12;
-		}
-		if (range2 >= gap.vacuous.from2 && range2 < gap.vacuous.to2) return false;
+		const double w = nearestWeight(gap, shifted - static_cast<double>(whole));
+		const double free = (1 - w) * gap.loFree + w * gap.hiFree;
+		observed = Mass::simpleFree(free);
+		return free > 1e-12;
 	}
-	const auto ns = detail::neighbours(position, polar.sectorCount(), polar.fullTurn());
+	if (range2 >= gap.vacuous.from2 && range2 < gap.vacuous.to2) return false;
+	auto ns = detail::neighbours(position, polar.sectorCount(), polar.fullTurn());
+	ns.wHi = nearestWeight(gap, ns.wHi);
 	const SectorSpan &lo = m_sectorSpans[ns.lo], &hi = m_sectorSpans[ns.hi];
 	if (range2 >= std::max(lo.reach2, hi.reach2)) return false;
 	// Where each sector's two bins hold one constant mass (free run or
