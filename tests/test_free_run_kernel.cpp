@@ -22,7 +22,8 @@ namespace
  * cells are loud (little occupied mass, events rare), as in the free space
  * of a real scan, where the bulk kernels' whole blocks do the work. */
 EvidentialGridStorage gridWithVariedCells(
-	double decayRate, std::uint32_t seed, bool mostlyQuiet = false)
+	double decayRate, std::uint32_t seed, bool mostlyQuiet = false,
+	bool firstHalfWrittenLast = false)
 {
 	EvidentialGridStorage g;
 	g.reset(0.0, 4.0, 0.0, 1.0, 0.1, 1000);
@@ -36,7 +37,11 @@ EvidentialGridStorage gridWithVariedCells(
 		g.beginInsertion(100.0 + 0.7 * scan);
 		for (std::size_t idx = 0; idx < g.geometry().cellCount(); ++idx)
 		{
-			if (unit(rng) < 0.5) continue;
+			// `firstHalfWrittenLast`: the first half's cells all take the
+			// last scan's stamp, whole blocks of one decay factor.
+			const bool written = firstHalfWrittenLast && scan == 5 &&
+				idx < g.geometry().cellCount() / 2;
+			if (!written && unit(rng) < 0.5) continue;
 			const double occupiedShare = mostlyQuiet ? 0.02 : (unit(rng) < 0.3 ? 1.0 : 0.1);
 			const double f = unit(rng), o = unit(rng) * (1.0 - f) * occupiedShare;
 			g.write(idx, Mass{0.0, f, o, 1.0 - f - o});
@@ -143,6 +148,20 @@ TEST(GridStorage, LongQuietRunsFuseAsCellByCell)
 	});
 }
 
+// Blocks whose cells the same scan wrote last take one decay factor.
+TEST(GridStorage, CellsWrittenTogetherDecayAsCellByCell)
+{
+	forEachFreeFusion([](auto rule) {
+		for (std::size_t first = 0; first < 9; ++first)
+			for (const std::size_t count : {8, 16, 17, 200, 391})
+			{
+				EvidentialGridStorage bulk = gridWithVariedCells(0.05, 13, true, true);
+				EvidentialGridStorage oneByOne = gridWithVariedCells(0.05, 13, true, true);
+				expectQuietRunAsCellByCell<rule()>(bulk, oneByOne, true, first, count, 0.61f, 2000);
+			}
+	});
+}
+
 TEST(GridStorage, SaturatedFreeCellsWithoutDecayReadAsCellByCell)
 {
 	// Cells free at the ceiling, in runs long enough for whole groups of
@@ -210,7 +229,9 @@ TEST(GridStorage, FreeRunsKeepingConflictFuseAsCellByCell)
 					g.beginInsertion(50.0 + 0.9 * scan);
 					for (std::size_t idx = 0; idx < g.geometry().cellCount(); ++idx)
 					{
-						if (unit(rng) < 0.4) continue;
+						// The last scan writes the first 200 cells: blocks
+						// of one decay factor.
+						if (!(scan == 4 && idx < 200) && unit(rng) < 0.4) continue;
 						// Conflict up to total, so that the cap is met too.
 						const double k = unit(rng) < 0.05 ? 1.0 : 0.6 * unit(rng);
 						const double f = (1.0 - k) * unit(rng), o = (1.0 - k - f) * unit(rng);

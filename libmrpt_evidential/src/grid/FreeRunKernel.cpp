@@ -104,10 +104,15 @@ void encodeFour(const TFused& fused, __m128 ceiling, __m128i& free, __m128i& occ
 	const __m128 room = _mm_sub_ps(scale, _mm_cvtepi32_ps(occupied));
 	free = _mm_cvttps_epi32(_mm_min_ps(_mm_min_ps(_mm_add_ps(fused.free, half), room), ceiling));
 }
-/** The decay factors of four cells' stamps, in single precision. */
+/** The decay factors of four cells' stamps (`stamps`, one lane each), in
+ * single precision: one factor when the four were last written by the same
+ * scan, as most blocks of a free run were. */
 template <typename Factor>
-__m128 fourFactors(const QuantizedCell* c, Factor&& factor)
+__m128 fourFactors(const QuantizedCell* c, __m128i stamps, Factor&& factor)
 {
+	const __m128i times = _mm_and_si128(stamps, _mm_set1_epi32(kStampMask));
+	if (_mm_movemask_epi8(_mm_cmpeq_epi32(times, _mm_shuffle_epi32(times, 0))) == 0xFFFF)
+		return _mm_set1_ps(static_cast<float>(factor(c[0].stamp)));
 	return _mm_set_ps(
 		static_cast<float>(factor(c[3].stamp)), static_cast<float>(factor(c[2].stamp)),
 		static_cast<float>(factor(c[1].stamp)), static_cast<float>(factor(c[0].stamp)));
@@ -178,7 +183,7 @@ void EvidentialGridStorage::fuseQuietFreeRun(
 		__m128 f = _mm_cvtepi32_ps(in.free), o = _mm_cvtepi32_ps(in.occupied);
 		if constexpr (Decays)
 		{
-			const __m128 d = fourFactors(c, [this](std::uint16_t t) { return decayFactor(t); });
+			const __m128 d = fourFactors(c, in.stamp, [this](std::uint16_t t) { return decayFactor(t); });
 			f = _mm_mul_ps(f, d);
 			o = _mm_mul_ps(o, d);
 		}
@@ -224,7 +229,7 @@ void EvidentialGridStorage::fuseFreeRunKeepingConflict(
 		__m128 keep = _mm_sub_ps(one, _mm_div_ps(_mm_cvtepi32_ps(in.aside), scale));
 		if constexpr (Decays)
 		{
-			const __m128 d = fourFactors(c, [this](std::uint16_t t) { return decayFactor(t); });
+			const __m128 d = fourFactors(c, in.stamp, [this](std::uint16_t t) { return decayFactor(t); });
 			const __m128 decayedKeep = _mm_sub_ps(one, _mm_mul_ps(d, _mm_sub_ps(one, keep)));
 			const __m128 s = _mm_div_ps(_mm_mul_ps(d, keep), decayedKeep);
 			f = _mm_mul_ps(f, s);

@@ -65,8 +65,15 @@ void storeEight(QuantizedCell* c, const TLanes8& v)
 /** The decay factors of eight cells' stamps, each taken in double precision
  * and then rounded to single, as the other kernels take them. Loaded one by
  * one: AVX2's gather was slower than that on the AMD EPYC measured. */
-__m256 eightFactors(const QuantizedCell* c, const TFreeRun& run)
+__m256 eightFactors(const QuantizedCell* c, const TFreeRun& run, __m256i stamps)
 {
+	// Cells last written by the same scan share one factor: most blocks of
+	// a free run, whose cells the scan before also crossed.
+	const __m256i times = _mm256_and_si256(stamps, _mm256_set1_epi32(kStampMask));
+	const __m256i firstTime = _mm256_permutevar8x32_epi32(times, _mm256_setzero_si256());
+	if (_mm256_movemask_epi8(_mm256_cmpeq_epi32(times, firstTime)) == -1)
+		return _mm256_set1_ps(
+			static_cast<float>(run.presentGain * run.stampGain[c[0].stamp & kStampMask]));
 	float d[8];
 	for (int k = 0; k < 8; ++k)
 		d[k] = static_cast<float>(run.presentGain * run.stampGain[c[k].stamp & kStampMask]);
@@ -171,7 +178,7 @@ std::size_t fuseQuietBlocksOfEight(
 		__m256 f = _mm256_cvtepi32_ps(in.free), o = _mm256_cvtepi32_ps(in.occupied);
 		if constexpr (Decays)
 		{
-			const __m256 d = eightFactors(c, run);
+			const __m256 d = eightFactors(c, run, in.stamp);
 			f = _mm256_mul_ps(f, d);
 			o = _mm256_mul_ps(o, d);
 		}
@@ -201,7 +208,7 @@ std::size_t fuseBlocksOfEightKeepingConflict(
 		__m256 keep = _mm256_sub_ps(one, _mm256_div_ps(_mm256_cvtepi32_ps(in.aside), scale));
 		if constexpr (Decays)
 		{
-			const __m256 d = eightFactors(c, run);
+			const __m256 d = eightFactors(c, run, in.stamp);
 			const __m256 decayedKeep = _mm256_sub_ps(one, _mm256_mul_ps(d, _mm256_sub_ps(one, keep)));
 			const __m256 s = _mm256_div_ps(_mm256_mul_ps(d, keep), decayedKeep);
 			f = _mm256_mul_ps(f, s);
