@@ -112,11 +112,12 @@ void forEachPieceOutside(
  * informs, each once, with the bilinear mix of the four polar cells around
  * the cell's centre (two sectors, two bins). A sector without evidence (a
  * beam without a return) is mixed with nothing: each sector holds its own
- * span, out to the middle of the gap, whole (doc/sensor-models.md).
+ * span, out to the middle of the gap, whole (doc/map.md).
  *
  * Only the cells that can receive evidence are looked at: the region a scan
  * informs (between two sector centres, up to the longer of the two sectors'
- * reach) is a polygon around the sensor, filled row by row. Inside it, a
+ * reach; beside a sector without evidence, the other's half alone) is a
+ * polygon around the sensor, filled row by row. Inside it, a
  * second polygon holds the cells whose four polar neighbours are all the same
  * free mass, the bulk of a scan: those cells need no polar coordinates and no
  * mix, and are visited apart. Keep one object and reuse it: its buffers then
