@@ -230,6 +230,7 @@ void CPolarToCartesian::setup(
 
 	const double bin = polar.binSize(), spacing = polar.sectorSpacing();
 	m_invSpacing = 1.0 / spacing;
+	m_bandSlack = kCentreLineSlack * m_invSpacing;
 	m_span = static_cast<double>(n) * spacing;
 	m_invBin = 1.0 / bin;
 	m_dir = sensor.mirrored ? -1.0 : 1.0;

@@ -254,6 +254,32 @@ class CPolarToCartesian
 	void polarOfCells(
 		const GridGeometry& grid, int firstColumn, double dy, int count, double* angle,
 		double* range2) const;
+	/** True when cells [from, to] of a row `dy` north of the sensor all lie
+	 * in one gap's vacuous band, found from the two end cells alone: along a
+	 * row the angle only grows or only falls (a wrap past 2 pi changes the
+	 * gap), and the range is largest at an end and smallest at an end or
+	 * abreast of the sensor. The ends must lie a hair inside the gap, so that
+	 * no cell between is one the arctangent could put in the next gap. Runs
+	 * of five cells or more only: for fewer, the two ends' angles cost what
+	 * the cells do (doc/performance.md). */
+	bool withinOneBand(const GridGeometry& grid, int from, int to, double dy) const
+	{
+		if (dy == 0.0) return false;
+		const double x0 = grid.cellCenterX(from) - m_sensor.x,
+					 x1 = grid.cellCenterX(to) - m_sensor.x;
+		const double p0 = angleFrom(x0, dy) * m_invSpacing + 0.5,
+					 p1 = angleFrom(x1, dy) * m_invSpacing + 0.5;
+		const double whole = std::floor(p0);
+		const double lo = std::min(p0, p1) - whole, hi = std::max(p0, p1) - whole;
+		if (std::floor(p1) != whole || hi + whole >= m_span * m_invSpacing + 0.5)
+			return false;  // two gaps, or out of the field of view
+		if (lo < m_bandSlack || hi > 1.0 - m_bandSlack) return false;
+		const VacuousBand& band = m_gapMixes[static_cast<std::size_t>(whole)].vacuous;
+		const double dy2 = dy * dy;
+		const double near2 = x0 * x1 <= 0.0 ? dy2 : std::min(x0 * x0, x1 * x1) + dy2;
+		const double far2 = std::max(x0 * x0, x1 * x1) + dy2;
+		return near2 >= band.from2 && far2 < band.to2;
+	}
 	/** The mix at a cell's polar coordinates (angle as polarOfCells() gives
 	 * it, squared range), or false when it is vacuous. */
 	bool mixAt(double angle, double range2, Mass& observed) const;
@@ -353,6 +379,8 @@ class CPolarToCartesian
 	/** Constants of mixAt(), set by setup(). */
 	double m_invSpacing = 0, m_span = 0, m_invBin = 0, m_dir = 1,
 		   m_yawOffset = 0;
+	/** The centre lines' slack in units of the sector spacing. */
+	double m_bandSlack = 0;
 };
 
 inline void CPolarToCartesian::polarOfCells(
@@ -452,6 +480,7 @@ void CPolarToCartesian::visitRows(
 		std::size_t v = m_skipsVacuous ? m_vacuousSpans.start[k] : 0;
 		const std::size_t vEnd = m_skipsVacuous ? m_vacuousSpans.start[k + 1] : 0;
 		const auto mixed = [&](int from, int to) {
+			if (to - from >= 4 && withinOneBand(grid, from, to, dy)) return;
 			double angle[kBatch], range2[kBatch];
 			for (int cx = from; cx <= to; cx += kBatch)
 			{
