@@ -76,5 +76,4 @@ inline int groundColumnOf(double v)
 	return f < 0.0 ? 0 : f >= kGroundColumns ? kGroundColumns - 1 : static_cast<int>(f);
 }
 
-
 }  // namespace mrpt_evidential

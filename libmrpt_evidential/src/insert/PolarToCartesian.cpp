@@ -439,13 +439,13 @@ bool CPolarToCartesian::crossedWithoutFreeEvidence(double x, double y) const
 	// Beside a sector without evidence, the nearer sector alone.
 	const std::size_t sectors[2] = {ns.lo, ns.hi};
 	const GapMix& gap = m_gapMixes[static_cast<std::size_t>(position + 1.0)];
-	const bool hiAlone = gap.nearestOnly && nearestWeight(gap, ns.wHi) == 1.0;
-	const std::size_t count = gap.nearestOnly ? 1 : 2;
+	const std::size_t first = gap.nearestOnly && ns.wHi >= 0.5 ? 1 : 0;
+	const std::size_t end = gap.nearestOnly ? first + 1 : 2;
 	const double range = std::sqrt(range2), bin = m_polar->binSize();
 	bool crossed = false, withheld = false;
-	for (std::size_t k = 0; k < count; ++k)
+	for (std::size_t k = first; k < end; ++k)
 	{
-		const std::size_t s = sectors[hiAlone ? 1 : k];
+		const std::size_t s = sectors[k];
 		const std::vector<double>& impacts = m_polar->impacts(s);
 		if (impacts.empty()) return false;
 		// A bin short of the impact the beam has crossed the point: a thing
