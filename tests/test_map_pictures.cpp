@@ -338,6 +338,18 @@ TEST(MapPictures, SavedRepresentationWritesEightFilesAndNoTemporary)
 	EXPECT_EQ(test::filesIn(dir).size(), 8u);
 }
 
+TEST(MapPictures, GeometryTextGivesLengthsToTheNanometre)
+{
+	// -0.1 - 0.2 is -0.30000000000000004 in binary and -0.7 - 0.2 is
+	// -0.8999999999999999, as edges summed from growth margins are: the
+	// text a reader sees is -0.3 and -0.9.
+	const CEvidentialGridMap2D map(-0.1 - 0.2, 0.7, -0.7 - 0.2, 1.0, 0.05);
+	const std::string text = map.geometryText("  ");
+	EXPECT_NE(text.find("  x: [-0.3, 0.7] m\n"), std::string::npos) << text;
+	EXPECT_NE(text.find("  y: [-0.9, 1] m\n"), std::string::npos) << text;
+	EXPECT_NE(text.find("  resolution: 0.05 m\n"), std::string::npos) << text;
+}
+
 TEST(MapPictures, FailedWritesThrowAndLeaveNothing)
 {
 	const fs::path dir = test::scratchDir("map_pictures", "failures");

@@ -252,7 +252,7 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	CellClass classOfCell(double x, double y) const;
 	/** The geometry in four lines, each after `indent`: "x: [xmin, xmax]
 	 * m", "y: [ymin, ymax] m", "resolution: r m", "cells: NX x NY (budget
-	 * B)", numbers in their shortest exact text. */
+	 * B)", lengths to the nanometre in their shortest text. */
 	std::string geometryText(const std::string& indent = "") const;
 	/** Centres of the cells whose decision is Occupied. */
 	std::vector<std::pair<double, double>> getOccupiedCellCenters() const;

@@ -284,13 +284,13 @@ void CEvidentialGridMap2D::savePictures(const std::string& prefix, bool withLege
 std::string CEvidentialGridMap2D::geometryText(const std::string& indent) const
 {
 	const GridGeometry& g = geometry();
-	using detail::shortestText;
+	using detail::metresText;
 	std::ostringstream s;
-	s << indent << "x: [" << shortestText(g.xMin) << ", " << shortestText(g.xMax())
+	s << indent << "x: [" << metresText(g.xMin) << ", " << metresText(g.xMax())
 	  << "] m\n"
-	  << indent << "y: [" << shortestText(g.yMin) << ", " << shortestText(g.yMax())
+	  << indent << "y: [" << metresText(g.yMin) << ", " << metresText(g.yMax())
 	  << "] m\n"
-	  << indent << "resolution: " << shortestText(g.resolution) << " m\n"
+	  << indent << "resolution: " << metresText(g.resolution) << " m\n"
 	  << indent << "cells: " << g.sizeX << " x " << g.sizeY << " (budget "
 	  << m_maxCells << ")\n";
 	return s.str();

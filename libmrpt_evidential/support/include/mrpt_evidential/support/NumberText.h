@@ -2,6 +2,7 @@
 #pragma once
 
 #include <charconv>
+#include <cmath>
 #include <string>
 
 namespace mrpt_evidential::detail
@@ -12,5 +13,14 @@ inline std::string shortestText(double value)
 {
 	char text[32];
 	return std::string(text, std::to_chars(text, text + sizeof(text), value).ptr);
+}
+
+/** A length in metres as a reader wants it: rounded to the nanometre, then
+ * its shortest text. A grid's edge summed from growth margins carries the
+ * last bits of binary arithmetic (-45.650000000000006); the nanometre is
+ * far below any cell. */
+inline std::string metresText(double value)
+{
+	return shortestText(std::isfinite(value) ? std::round(value * 1e9) / 1e9 : value);
 }
 }  // namespace mrpt_evidential::detail
