@@ -18,9 +18,10 @@ inline std::string shortestText(double value)
 /** A length in metres as a reader wants it: rounded to the nanometre, then
  * its shortest text. A grid's edge summed from growth margins carries the
  * last bits of binary arithmetic (-45.650000000000006); the nanometre is
- * far below any cell. */
+ * far below any cell. From 1000 km on (and for inf and NaN) the exact
+ * text: there a double's steps come near the nanometre. */
 inline std::string metresText(double value)
 {
-	return shortestText(std::isfinite(value) ? std::round(value * 1e9) / 1e9 : value);
+	return shortestText(std::abs(value) < 1e6 ? std::round(value * 1e9) / 1e9 : value);
 }
 }  // namespace mrpt_evidential::detail
