@@ -35,7 +35,7 @@ constexpr double kMaxMarginStretch = 3.0;
 /** The vacuous bands are outlined and left out of the visit when they hold
  * at least this many cells: their two outlines (with two edges a band along
  * the strips) and spans cost about as much as finding 10,000 to 15,000 cells
- * vacuous one by one (doc/performance.md). */
+ * vacuous one by one (doc/performance-history.md). */
 constexpr double kMinVacuousCells = 20000.0;
 /** Radians: the transform's angles (fastAtan2) are within 2e-6 rad, so a
  * cell this close to a centre line may be mixed as the next gap's, where the

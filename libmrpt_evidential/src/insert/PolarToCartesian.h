@@ -206,7 +206,7 @@ class CPolarToCartesian
 		const GridGeometry& grid, int first, int last, VisitMixed&& visitMixed,
 		VisitUniform&& visitUniform, Ahead&& ahead) const;
 	/** How many rows ahead visitRows() announces a row's spans (2 to 4
-	 * measured alike, 1 a little slower: doc/performance.md). */
+	 * measured alike, 1 a little slower: doc/performance-history.md). */
 	static constexpr int kRowsAhead = 3;
 
    private:
@@ -261,7 +261,7 @@ class CPolarToCartesian
 	 * abreast of the sensor. The ends must lie a hair inside the gap, so that
 	 * no cell between is one the arctangent could put in the next gap. Runs
 	 * of five cells or more only: for fewer, the two ends' angles cost what
-	 * the cells do (doc/performance.md). */
+	 * the cells do (doc/performance-history.md). */
 	bool withinOneBand(const GridGeometry& grid, int from, int to, double dy) const
 	{
 		if (dy == 0.0) return false;

@@ -351,7 +351,7 @@ class EvidentialGridStorage
 	 * spans of a row a few rows before it fuses them: a row's spans are
 	 * short, and the processor's own prefetcher, which follows a stream only
 	 * after a few misses, leaves each one waiting on memory
-	 * (doc/performance.md). At most kMaxPrefetchLines cache lines of
+	 * (doc/performance-history.md). At most kMaxPrefetchLines cache lines of
 	 * kCacheLine bytes a call: past them the processor's prefetcher has the
 	 * stream. [first, first + count) must lie within the grid; never
 	 * throws. */

@@ -6,7 +6,7 @@
  * the baseline x86-64 of Debian's packages and once with AVX2, the loader
  * choosing the copy the processor can run (function multiversioning, through
  * glibc's ifunc). The AVX2 copy handles twice the cells per vector
- * instruction in the loops the compiler vectorizes (doc/performance.md).
+ * instruction in the loops the compiler vectorizes (doc/performance-history.md).
  * Everything the function calls is inlined into each copy (`flatten`): GCC
  * does not inline a baseline function into an AVX2 one by itself, and the
  * copy calling the transform's per-cell mix out of line was slower than no
