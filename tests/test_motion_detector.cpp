@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <utility>
 #include <vector>
 
 using namespace mrpt_evidential;
@@ -57,7 +58,7 @@ class DetectorOnAGrid : public ::testing::Test
 		detector.begin(rules);
 		detector.judgeCrossedArrivals(grid, crossedWithoutFreeEvidence);
 		fusions();
-		detector.settle(grid, impactCells);
+		detector.settle(grid, impactCells, sensor.first, sensor.second);
 	}
 	void fuse(std::size_t idx, const Mass& observed, bool impact)
 	{
@@ -139,6 +140,9 @@ class DetectorOnAGrid : public ::testing::Test
 	std::size_t wall = 0, floor = 0;
 	/** Cells the beams of each insertion ended in, for settle(). */
 	std::size_t impactCells = 100;
+	/** Where the beams come from (metres): within a metre of every cell, so
+	 * that the clearances are the rules' own. */
+	std::pair<double, double> sensor{0.5, 0.5};
 	std::function<bool(std::size_t)> crossedWithoutFreeEvidence = [](std::size_t) { return false; };
 };
 }  // namespace
@@ -310,7 +314,7 @@ TEST_F(DetectorOnAGrid, DefaultRulesNeedTwoSightsBeforeAChange)
 		grid.beginInsertion(t);
 		detector.begin(defaults);
 		fusions();
-		detector.settle(grid, impactCells);
+		detector.settle(grid, impactCells, sensor.first, sensor.second);
 	};
 	// The fixture saw every cell free once.
 	insertWithDefaults(1.1, [&] { fuse(twice, Mass::simpleFree(0.7), false); });
@@ -400,6 +404,42 @@ TEST_F(DetectorOnAGrid, ArrivalBesideWhatTheMapSawFreeBeforeItLeanedOccupied)
 		ASSERT_EQ(grid.event(standing), CellEvent::None);
 		insertion(1.0, [&] { fuse(cell, Mass::simpleOccupied(0.9), true); });
 		EXPECT_EQ(grid.event(cell), c.expected);
+	}
+}
+
+TEST_F(DetectorOnAGrid, ClearancesGrowWithTheRangeOfTheChange)
+{
+	// A degree of error in the heading moves a face 12 m away by 21 cm:
+	// there a hit two cells from a thing that stands (an arrival at once
+	// from close by, above) is the pose's error, and so is a thing's cell
+	// three cells from the wall turning free (a departure from close by).
+	struct TCase
+	{
+		double sensorX;
+		CellEvent arrival;
+		bool departs;
+	};
+	for (const TCase c : {TCase{0.5, CellEvent::Appeared, true}, TCase{-11.5, CellEvent::Leaving, false}})
+	{
+		SCOPED_TRACE(testing::Message() << "sensor at x " << c.sensorX);
+		sensor = {c.sensorX, 0.5};
+		grid.reset(0.0, 1.0, 0.0, 1.0, 0.05, 1000);
+		const GridGeometry& g = grid.geometry();
+		const std::size_t standing = g.index(5, 5), cell = g.index(7, 5);
+		standBesideSeenFreeFloor(standing, true);
+		insertion(1.0, [&] { fuse(cell, Mass::simpleOccupied(0.9), true); });
+		EXPECT_EQ(grid.event(cell), c.arrival);
+
+		// The thing arrives seen from close by, and leaves seen from afar.
+		SetUp();
+		sensor = {0.5, 0.5};
+		const std::size_t thing = g.index(10, 9);
+		thingStandsFromOneSecond(thing);
+		ASSERT_EQ(grid.event(thing), CellEvent::Appeared);
+		sensor = {c.sensorX, 0.5};
+		const double t = seeFreeUntilNoneLeansOccupied(2.0, {thing});
+		insertion(t, [&] { fuse(thing, Mass::simpleFree(0.7), false); });
+		EXPECT_EQ(grid.event(thing) == CellEvent::Disappeared, c.departs);
 	}
 }
 

@@ -96,7 +96,8 @@ struct TEvidentialInsertionOptions : public mrpt::config::CLoadableOptions
 	 * [0, 10], default 0.1. For an arrival it is measured from the
 	 * imprecise model's spread in front of a face (the clearance less
 	 * min(imprecision, freeMargin), at least one cell), and from faces no
-	 * beam ever crossed (doc/dynamics.md). */
+	 * beam ever crossed. Far from the sensor it grows to what a degree of
+	 * error in the robot's heading moves a face by (doc/dynamics.md). */
 	double motionClearance = 0.10;
 	/** 3-D clouds (CObservationPointCloud, CObservationVelodyneScan,
 	 * CObservation3DRangeScan): `groundRemoval`, where the ground lies:

@@ -3,6 +3,7 @@
 #include "insert/MotionDetector.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 namespace mrpt_evidential
@@ -80,7 +81,7 @@ bool CMotionDetector::nearStaticStructure(
 	const EvidentialGridStorage& grid, std::size_t idx) const
 {
 	const GridGeometry& g = grid.geometry();
-	const TWindow w = windowAround(g, idx, m_rules.clearanceCells);
+	const TWindow w = windowAround(g, idx, m_clearance);
 	for (int y = w.y0; y <= w.y1; ++y)
 		for (int x = w.x0; x <= w.x1;)
 		{
@@ -119,7 +120,7 @@ bool CMotionDetector::besideOccupied(
 	const EvidentialGridStorage& grid, std::size_t idx) const
 {
 	const GridGeometry& g = grid.geometry();
-	const int near = m_rules.arrivalClearanceCells;
+	const int near = m_arrivalClearance;
 	const int cx = g.columnOf(idx), cy = g.rowOf(idx);
 	return anyAround(g, idx, std::max(near, m_rules.clearanceCells), [&](std::size_t cell) {
 		// Farther than the next cells, only what no beam ever crossed: a
@@ -228,7 +229,7 @@ void CMotionDetector::settleDeparture(
 		}
 		return;
 	}
-	if (!nearStaticStructure(grid, idx) && !besideUnseen(grid, idx, m_rules.clearanceCells))
+	if (!nearStaticStructure(grid, idx) && !besideUnseen(grid, idx, m_clearance))
 	{
 		// Free now, and nothing stands beside it that could explain a ray
 		// through it: no structure, and no unseen inside of a wall whose
@@ -263,7 +264,8 @@ void CMotionDetector::listScanLeaving()
 	m_scanLeaving.clear();
 }
 
-void CMotionDetector::settle(EvidentialGridStorage& grid, std::size_t impactCells)
+void CMotionDetector::settle(
+	EvidentialGridStorage& grid, std::size_t impactCells, double sensorX, double sensorY)
 {
 	// A listed cell is a departure under way only while its event is
 	// Leaving (every use of the list asks both), so the cells judged since
@@ -294,10 +296,21 @@ void CMotionDetector::settle(EvidentialGridStorage& grid, std::size_t impactCell
 	for (const TCandidate& c : m_candidates)
 		if (c.event == CellEvent::Appeared) m_scanArrivals.push_back(c.index);
 	std::sort(m_scanArrivals.begin(), m_scanArrivals.end());
+	const GridGeometry& g = grid.geometry();
+	const double cellsPerMetre = std::tan(TMotionRules::kHeadingError) / g.resolution;
 	for (const TCandidate& c : m_candidates)
 	{
+		// The arrival's clearance grows, or the departure's; an arrival's
+		// test of the recent arrivals around it keeps the rules' own.
+		const int atRange = m_rules.clearanceCells == 0 ? 0 : static_cast<int>(std::lround(
+			std::hypot(g.cellCenterX(g.columnOf(c.index)) - sensorX,
+					   g.cellCenterY(g.rowOf(c.index)) - sensorY) *
+			cellsPerMetre));
+		const bool arrival = c.event == CellEvent::Appeared;
+		m_arrivalClearance = std::max(m_rules.arrivalClearanceCells, arrival ? atRange : 0);
+		m_clearance = std::max(m_rules.clearanceCells, arrival ? 0 : atRange);
 		const CellEvent before = grid.event(c.index);
-		if (c.event == CellEvent::Appeared)
+		if (arrival)
 			settleArrival(grid, c.index, before);
 		else
 			settleDeparture(grid, c.index, before);

@@ -49,6 +49,13 @@ struct TMotionRules
 	/** Metres: beams half a degree apart end 9 cm apart on a face 10 m
 	 * away. */
 	static constexpr double kFaceGap = 0.1;
+	/** Radians: the error of the robot's heading the layer is sized for (a
+	 * SLAM front end's degree). It moves a face r metres from the sensor by
+	 * up to r tan(kHeadingError), so a candidate's clearance
+	 * (arrivalClearanceCells for an arrival, clearanceCells for a
+	 * departure) grows to that many cells at its range: at 0.05 m cells two
+	 * from 4.3 m, three from 7.2 m. No clearance (0) stays none. */
+	static constexpr double kHeadingError = 0.017453292519943295;
 	/** `threshold`, or less where a sight of mass `strongest` (muO for a
 	 * hit, muF for a free sight) could not reach it from a cell kSureBefore
 	 * sure of the other class: with the default masses motionMinConflict
@@ -108,6 +115,8 @@ struct TMotionRules
  *   are Leaving and lean free: the detector lists the leaving ones). An
  *   arrival stays while its thing does; a departure seen free again after
  *   its window is over.
+ * - Far from the sensor the clearances grow: an error of the heading moves
+ *   a face by more there (TMotionRules::kHeadingError).
  * - A misplaced scan: when a large share of the cells a scan's beams ended
  *   in were seen free before (kMisplacedShare of them, and at least
  *   kMisplacedArrivals), the scan disagrees with the map as a whole. That
@@ -121,6 +130,7 @@ class CMotionDetector
 	void begin(const TMotionRules& rules)
 	{
 		m_rules = rules;
+		m_arrivalClearance = rules.arrivalClearanceCells, m_clearance = rules.clearanceCells;
 		m_candidates.clear();
 		m_scanArrivals.clear();
 	}
@@ -178,9 +188,11 @@ class CMotionDetector
 		band.m_candidates.clear();
 	}
 	/** Settles the candidates of the scan, whose beams ended in
-	 * `impactCells` cells: none when the scan is a misplaced one (see the
-	 * class). After judgeCrossedArrivals() of the same scan. */
-	void settle(EvidentialGridStorage& grid, std::size_t impactCells);
+	 * `impactCells` cells, taken from (sensorX, sensorY) (metres, the
+	 * grid's frame): none when the scan is a misplaced one (see the class).
+	 * After judgeCrossedArrivals() of the same scan. */
+	void settle(
+		EvidentialGridStorage& grid, std::size_t impactCells, double sensorX, double sensorY);
 	/** The rule of a misplaced scan (see the class). */
 	static constexpr double kMisplacedShare = 0.2;
 	static constexpr std::size_t kMisplacedArrivals = 8;
@@ -196,7 +208,7 @@ class CMotionDetector
 	void afterFusionOfEventCell(
 		EvidentialGridStorage& grid, std::size_t idx, CellEvent e,
 		const Mass& observed, bool impact);
-	/** True when a cell within clearanceCells of idx (idx excluded) is static
+	/** True when a cell within the clearance of idx (idx excluded) is static
 	 * structure: it leans occupied, held beams' ends or was never seen free
 	 * (a wall's inside), and stands still (standsStill: no thing that
 	 * moved). */
@@ -269,6 +281,9 @@ class CMotionDetector
 		CellEvent event;
 	};
 	TMotionRules m_rules;
+	/** The clearances of the candidate being settled: the rules', grown
+	 * with its range (TMotionRules::kHeadingError). */
+	int m_arrivalClearance = 1, m_clearance = 3;
 	std::vector<TCandidate> m_candidates;
 	/** The scan's candidate arrivals, sorted, while they are settled. */
 	std::vector<std::size_t> m_scanArrivals;

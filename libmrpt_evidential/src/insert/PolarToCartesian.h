@@ -149,6 +149,8 @@ class CPolarToCartesian
 	 * the free margin before an impact, or where free evidence stops at the
 	 * nearer sector's limit, beside what the other beam hit). */
 	bool crossedWithoutFreeEvidence(double x, double y) const;
+	/** The sensor of the latest setup(). */
+	const PlanarSensorPose& sensor() const { return m_sensor; }
 	/** Metres: a beam whose nearest impact lies this much in front of a
 	 * point stopped at something else than what may stand at the point (a
 	 * thing that walked on, now between the point and the sensor), not at

@@ -152,7 +152,7 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 		m_grid.markImpact(idx);
 		single(motion, idx, withImpact(Mass::vacuous(), occupied), true);
 	});
-	motion.settle(m_grid, impacts.cells().size());
+	motion.settle(m_grid, impacts.cells().size(), transform.sensor().x, transform.sensor().y);
 }
 
 Motion CEvidentialGridMap2D::motionOf(std::size_t idx) const
