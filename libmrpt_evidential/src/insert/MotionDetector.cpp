@@ -78,10 +78,10 @@ void CMotionDetector::afterFusionOfEventCell(
 }
 
 bool CMotionDetector::nearStaticStructure(
-	const EvidentialGridStorage& grid, std::size_t idx) const
+	const EvidentialGridStorage& grid, std::size_t idx, int clearance) const
 {
 	const GridGeometry& g = grid.geometry();
-	const TWindow w = windowAround(g, idx, m_clearance);
+	const TWindow w = windowAround(g, idx, clearance);
 	for (int y = w.y0; y <= w.y1; ++y)
 		for (int x = w.x0; x <= w.x1;)
 		{
@@ -117,10 +117,9 @@ bool CMotionDetector::besideUnseen(
 }
 
 bool CMotionDetector::besideOccupied(
-	const EvidentialGridStorage& grid, std::size_t idx) const
+	const EvidentialGridStorage& grid, std::size_t idx, int near) const
 {
 	const GridGeometry& g = grid.geometry();
-	const int near = m_arrivalClearance;
 	const int cx = g.columnOf(idx), cy = g.rowOf(idx);
 	return anyAround(g, idx, std::max(near, m_rules.clearanceCells), [&](std::size_t cell) {
 		// Farther than the next cells, only what no beam ever crossed: a
@@ -135,7 +134,7 @@ bool CMotionDetector::besideOpenArrival(
 	const EvidentialGridStorage& grid, std::size_t idx) const
 {
 	return anyAround(grid.geometry(), idx, m_rules.thingCells, [&](std::size_t cell) {
-		return isRecentArrival(grid, cell) && !nearStaticStructure(grid, cell) &&
+		return isRecentArrival(grid, cell) && !nearStaticStructure(grid, cell, m_rules.clearanceCells) &&
 			!besideUnseen(grid, cell, 1);
 	});
 }
@@ -162,7 +161,7 @@ bool CMotionDetector::touchesEarlierArrival(
 }
 
 void CMotionDetector::settleArrival(
-	EvidentialGridStorage& grid, std::size_t idx, CellEvent before)
+	EvidentialGridStorage& grid, std::size_t idx, CellEvent before, int near)
 {
 	// A leaving cell waiting beside structure hit again: what left it is
 	// back, or the pose's error that turned it has turned back.
@@ -172,7 +171,7 @@ void CMotionDetector::settleArrival(
 		return;
 	}
 	const bool unseen = besideUnseen(grid, idx, 1);
-	if (!unseen && !besideOccupied(grid, idx))
+	if (!unseen && !besideOccupied(grid, idx, near))
 	{
 		grid.setEvent(idx, CellEvent::Appeared), m_arrivals.push_back(idx);
 		return;
@@ -215,7 +214,7 @@ void CMotionDetector::settleArrival(
 }
 
 void CMotionDetector::settleDeparture(
-	EvidentialGridStorage& grid, std::size_t idx, CellEvent before)
+	EvidentialGridStorage& grid, std::size_t idx, CellEvent before, int clearance)
 {
 	if (leansOccupied(grid.read(idx)))
 	{
@@ -229,7 +228,7 @@ void CMotionDetector::settleDeparture(
 		}
 		return;
 	}
-	if (!nearStaticStructure(grid, idx) && !besideUnseen(grid, idx, m_clearance))
+	if (!nearStaticStructure(grid, idx, clearance) && !besideUnseen(grid, idx, clearance))
 	{
 		// Free now, and nothing stands beside it that could explain a ray
 		// through it: no structure, and no unseen inside of a wall whose
@@ -300,20 +299,18 @@ void CMotionDetector::settle(
 	const double cellsPerMetre = std::tan(TMotionRules::kHeadingError) / g.resolution;
 	for (const TCandidate& c : m_candidates)
 	{
-		// The arrival's clearance grows, or the departure's; an arrival's
-		// test of the recent arrivals around it keeps the rules' own.
+		// The arrival's reach to a face grows with range, or the
+		// departure's clearance (an arrival's test of the recent arrivals
+		// around it keeps the rules' own).
 		const int atRange = m_rules.clearanceCells == 0 ? 0 : static_cast<int>(std::lround(
 			std::hypot(g.cellCenterX(g.columnOf(c.index)) - sensorX,
 					   g.cellCenterY(g.rowOf(c.index)) - sensorY) *
 			cellsPerMetre));
-		const bool arrival = c.event == CellEvent::Appeared;
-		m_arrivalClearance = std::max(m_rules.arrivalClearanceCells, arrival ? atRange : 0);
-		m_clearance = std::max(m_rules.clearanceCells, arrival ? 0 : atRange);
 		const CellEvent before = grid.event(c.index);
-		if (arrival)
-			settleArrival(grid, c.index, before);
+		if (c.event == CellEvent::Appeared)
+			settleArrival(grid, c.index, before, std::max(m_rules.arrivalClearanceCells, atRange));
 		else
-			settleDeparture(grid, c.index, before);
+			settleDeparture(grid, c.index, before, std::max(m_rules.clearanceCells, atRange));
 	}
 	listScanLeaving();
 }

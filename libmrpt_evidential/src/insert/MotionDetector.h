@@ -130,7 +130,6 @@ class CMotionDetector
 	void begin(const TMotionRules& rules)
 	{
 		m_rules = rules;
-		m_arrivalClearance = rules.arrivalClearanceCells, m_clearance = rules.clearanceCells;
 		m_candidates.clear();
 		m_scanArrivals.clear();
 	}
@@ -208,11 +207,12 @@ class CMotionDetector
 	void afterFusionOfEventCell(
 		EvidentialGridStorage& grid, std::size_t idx, CellEvent e,
 		const Mass& observed, bool impact);
-	/** True when a cell within the clearance of idx (idx excluded) is static
+	/** True when a cell within `clearance` cells of idx (idx excluded) is static
 	 * structure: it leans occupied, held beams' ends or was never seen free
 	 * (a wall's inside), and stands still (standsStill: no thing that
 	 * moved). */
-	bool nearStaticStructure(const EvidentialGridStorage& grid, std::size_t idx) const;
+	bool nearStaticStructure(
+		const EvidentialGridStorage& grid, std::size_t idx, int clearance) const;
 	/** True when a cell within `reach` cells of idx was never seen free
 	 * (n(F) = 0; an arrival's cell counts as seen): a hit next to one is the
 	 * first sight of what stood hidden behind it (a block's corner, a wall's
@@ -220,14 +220,14 @@ class CMotionDetector
 	 * that rays grazed, not a change of what the map had seen. */
 	static bool besideUnseen(const EvidentialGridStorage& grid, std::size_t idx, int reach);
 	/** True when a cell near idx (idx excluded) leans occupied and is not
-	 * an arrival or leaving, within arrivalClearanceCells (a face the
+	 * an arrival or leaving, within `near` cells (a face the
 	 * pose's error moves, or the imprecision's spread in front of it, which
 	 * was seen free before it leaned occupied), or within clearanceCells
 	 * and never seen free (a face seen at a grazing angle, whose spread
 	 * lies along it, not in front). A thing that walks on leaves no spread
 	 * behind that leans occupied: one scan's spread does not turn a free
 	 * cell. */
-	bool besideOccupied(const EvidentialGridStorage& grid, std::size_t idx) const;
+	bool besideOccupied(const EvidentialGridStorage& grid, std::size_t idx, int near) const;
 	/** True when a recent arrival within thingCells of idx (idx excluded)
 	 * lies in the open: away from static structure and from cells never seen
 	 * free. A thing that moves shows faces out of the clearance of what it
@@ -267,11 +267,15 @@ class CMotionDetector
 	}
 	/** The rules of a pending arrival, in insertions (see the class). */
 	static constexpr std::size_t kConfirmationInsertions = 2, kFlipMemory = 40;
-	/** Settles the candidate arrival at cell idx, whose event was `before`. */
-	void settleArrival(EvidentialGridStorage& grid, std::size_t idx, CellEvent before);
+	/** Settles the candidate arrival at cell idx, whose event was `before`;
+	 * `near`: its reach to a face (arrivalClearanceCells, grown with its
+	 * range). */
+	void settleArrival(
+		EvidentialGridStorage& grid, std::size_t idx, CellEvent before, int near);
 	/** Settles the candidate departure at cell idx, whose event was
-	 * `before`. */
-	void settleDeparture(EvidentialGridStorage& grid, std::size_t idx, CellEvent before);
+	 * `before`; `clearance`: clearanceCells, grown with its range. */
+	void settleDeparture(
+		EvidentialGridStorage& grid, std::size_t idx, CellEvent before, int clearance);
 	/** Adds the scan's leaving cells to m_leaving. */
 	void listScanLeaving();
 
@@ -281,9 +285,6 @@ class CMotionDetector
 		CellEvent event;
 	};
 	TMotionRules m_rules;
-	/** The clearances of the candidate being settled: the rules', grown
-	 * with its range (TMotionRules::kHeadingError). */
-	int m_arrivalClearance = 1, m_clearance = 3;
 	std::vector<TCandidate> m_candidates;
 	/** The scan's candidate arrivals, sorted, while they are settled. */
 	std::vector<std::size_t> m_scanArrivals;
