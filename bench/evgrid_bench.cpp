@@ -36,9 +36,9 @@ using namespace bench;
 namespace
 {
 bool smoke = false;
-/** Runs per case (but a whole path), each of kInsertions insertions or of
- * kCallSeconds of calls: each run starts from a fresh map, so that a run
- * holds as many first writes to a cell as a single run would. */
+/** Runs per case, each of kInsertions insertions (a path's, for a whole
+ * path) or of kCallSeconds of calls: each run starts from a fresh map, so
+ * that a run holds as many first writes to a cell as a single run would. */
 constexpr int kRepetitions = 3;
 constexpr double kCallSeconds = 0.5;
 
@@ -311,7 +311,7 @@ void bench::addCase(
 		b->MinTime(kCallSeconds);
 	else
 		b->Iterations(kInsertions);
-	if (timing != Timing::WholePath) b->Repetitions(kRepetitions)->ReportAggregatesOnly(true);
+	b->Repetitions(kRepetitions)->ReportAggregatesOnly(true);
 }
 
 namespace
