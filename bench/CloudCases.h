@@ -1,7 +1,7 @@
 /* evgrid-bench: the cases of 3-D clouds (issue 12), beside the 2-D ones. */
 #pragma once
 
-#include <benchmark/benchmark.h>
+#include "Cases.h"
 
 #include <functional>
 #include <map>
@@ -9,23 +9,6 @@
 
 namespace bench
 {
-/** How a case is timed. Each case runs several times, and the ratios take
- * the median of the runs: a run that the machine slowed (the first cases of
- * a process often are, and a path's first writes to new memory vary on a
- * virtual machine) then moves no ratio. */
-enum class Timing
-{
-	/** A fixed number of insertions in each run (into a fresh map). */
-	Insertions,
-	/** The insertions of a whole path in each run, from a fresh map: the
-	 * grid's growth along the path is what it measures. */
-	WholePath,
-	/** As many calls as fit in a fixed time, in each run. */
-	Calls
-};
-/** Registers a case. */
-void addCase(const std::string& name, std::function<void(benchmark::State&)> fn, Timing timing);
-
 /** The cloud cases: a simulated 16-layer scan of about 30,000 points and the
  * real VLP-16 one, into our map and, flattened into one 360-degree scan,
  * into COccupancyGridMap2D with widening beams, at 0.05 and 0.10 m. */

@@ -1,0 +1,17 @@
+/* evgrid-bench: whole runs (issue 15): stock scans along long paths from a
+ * small grid that grows, against a grid that holds the path from the start,
+ * and SENA's whole log along its odometry, ours and MRPT's grid. */
+#pragma once
+
+#include "Cases.h"
+
+#include <map>
+#include <string>
+
+namespace bench
+{
+/** Registers the paths' and SENA's runs. */
+void registerRunCases();
+/** Their ratios, from the microseconds per case. */
+void printRunRatios(const std::map<std::string, double>& microseconds);
+}  // namespace bench
