@@ -3,12 +3,13 @@
  * front of a face next to them; not what the map saw free two cells away)
  * wait for a hit at the next insertions, beside a thing seen arriving in
  * the open whose face reaches them (at once when its face reached them at an
- * earlier insertion), and stay when hit again; the reach to a face grows with
- * the range; a thing that arrived long ago is no structure, a cell that flips
- * between hit and free does not become an arrival (then or later), nor does a
- * hit beside cells never seen free at once; a scan whose impacts mostly land
- * on free cells (a misplaced one) settles nothing, and the list of recent
- * arrivals outlives growth that moves no cell. */
+ * earlier insertion), and stay when hit again; the reach to a face, and to
+ * cells never seen free, grows with the range; a thing that arrived long ago
+ * is no structure, a cell that flips between hit and free does not become an
+ * arrival (then or later), nor does a hit beside cells never seen free at
+ * once; a scan whose impacts mostly land on free cells (a misplaced one)
+ * settles nothing, and the list of recent arrivals outlives growth that
+ * moves no cell. */
 #include "motion_detector_fixture.h"
 
 using namespace mrpt_evidential;
@@ -201,6 +202,32 @@ TEST_F(DetectorOnAGrid, ArrivalsReachToAFaceGrowsWithTheRange)
 		const std::size_t standing = g.index(5, 5), cell = g.index(7, 5);
 		standBesideSeenFreeFloor(standing, true);
 		insertion(1.0, [&] { fuse(cell, Mass::simpleOccupied(0.9), true); });
+		EXPECT_EQ(grid.event(cell), c.arrival);
+	}
+}
+
+TEST_F(DetectorOnAGrid, ArrivalsReachToCellsNeverSeenFreeGrowsWithTheRange)
+{
+	// A hit four cells from the edge of what was never seen free (an unseen
+	// room's inside): an arrival seen from close by, pending seen from 12 m,
+	// where a degree of the heading's error moves that edge by as much.
+	struct TCase
+	{
+		double sensorX;
+		CellEvent arrival;
+	};
+	for (const TCase c : {TCase{0.5, CellEvent::Appeared}, TCase{-11.5, CellEvent::Leaving}})
+	{
+		SCOPED_TRACE(testing::Message() << "sensor at x " << c.sensorX);
+		sensor = {c.sensorX, 0.5};
+		grid.reset(0.0, 1.0, 0.0, 1.0, 0.05, 1000);
+		const GridGeometry& g = grid.geometry();
+		insertion(0.0, [&] {
+			for (int y = 0; y < g.sizeY; ++y)
+				for (int x = 5; x < g.sizeX; ++x) fuse(g.index(x, y), Mass::simpleFree(0.7), false);
+		});
+		const std::size_t cell = g.index(8, 10);
+		insertion(0.1, [&] { fuse(cell, Mass::simpleOccupied(0.9), true); });
 		EXPECT_EQ(grid.event(cell), c.arrival);
 	}
 }

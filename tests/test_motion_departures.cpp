@@ -1,10 +1,11 @@
 /* The motion layer's departures and its rules on hand-made fusions
  * (src/insert/): a departure waits until the cell no longer leans occupied,
  * is reported beside where the thing steps, and is none beside a wall's
- * unseen inside or behind a thin thing's grazed face (never reported while it
- * waits there); its clearance grows with the range; the least conflict stays
- * within reach of the sensor's masses, and one sight is not enough for the
- * default rules. */
+ * unseen inside or behind a thin thing's grazed face (never reported while
+ * it waits there), nor is a pending arrival turned down, wherever it lies;
+ * its clearance grows with the range; the least conflict stays within reach
+ * of the sensor's masses, and one sight is not enough for the default
+ * rules. */
 #include "motion_detector_fixture.h"
 
 using namespace mrpt_evidential;
@@ -123,6 +124,22 @@ TEST_F(DetectorOnAGrid, DepartureThreeCellsFromAWallSeenFromAfarIsThePosesError)
 	const double t = seeFreeUntilNoneLeansOccupied(2.0, {thing});
 	insertion(t, [&] { fuse(thing, Mass::simpleFree(0.7), false); });
 	EXPECT_NE(grid.event(thing), CellEvent::Disappeared);
+}
+
+TEST_F(DetectorOnAGrid, PendingArrivalTurnedDownIsNoDepartureInTheOpenEither)
+{
+	// A hit four cells from the wall seen from 12 m is pending: a degree of
+	// the heading's error moves the wall by that much there. Seen free from
+	// close by, where nothing stands within the clearance, it is no
+	// departure: it was never reported. The cell flips.
+	sensor = {-11.5, 0.5};
+	const std::size_t cell = grid.geometry().index(10, 8);
+	insertion(1.0, [&] { fuse(cell, Mass::simpleOccupied(0.9), true); });
+	ASSERT_EQ(grid.event(cell), CellEvent::Leaving) << "pending";
+	sensor = {0.5, 0.5};
+	insertion(1.1, [&] { fuse(cell, Mass::simpleFree(0.7), false); });
+	EXPECT_EQ(grid.event(cell), CellEvent::None);
+	EXPECT_TRUE(grid.flipped(cell));
 }
 
 TEST_F(DetectorOnAGrid, GrazedFaceBesideAWallsUnseenInsideIsNoDeparture)

@@ -170,7 +170,10 @@ void CMotionDetector::settleArrival(
 		grid.setEvent(idx, CellEvent::None);
 		return;
 	}
-	const bool unseen = besideUnseen(grid, idx, 1);
+	// What stood hidden and is seen for the first time lies next to cells
+	// never seen free; far from the sensor, within what the heading's error
+	// moves them by (an unseen room's edge, seen at a grazing angle).
+	const bool unseen = besideUnseen(grid, idx, std::max(1, near));
 	if (!unseen && !besideOccupied(grid, idx, near))
 	{
 		grid.setEvent(idx, CellEvent::Appeared), m_arrivals.push_back(idx);
@@ -228,6 +231,16 @@ void CMotionDetector::settleDeparture(
 		}
 		return;
 	}
+	if (before == CellEvent::Leaving && !isLeaving(idx))
+	{
+		// A pending arrival turned down: it was never reported, so neither
+		// is its leaving, wherever it lies (in the open too: it was pending
+		// for what stood near it when it was hit, from a range the clearances
+		// are judged at no longer). The cell flips.
+		grid.markFlipped(idx);
+		grid.setEvent(idx, CellEvent::None);
+		return;
+	}
 	if (!nearStaticStructure(grid, idx, clearance) && !besideUnseen(grid, idx, clearance))
 	{
 		// Free now, and nothing stands beside it that could explain a ray
@@ -247,8 +260,8 @@ void CMotionDetector::settleDeparture(
 	const bool waits = before == CellEvent::Leaving && isLeaving(idx) &&
 		grid.eventTime(idx) > insertionTimeBefore(grid, kDepartureWait);
 	if (waits) return;
-	// Free again beside structure: a pending arrival turned down (or a grazed
-	// cell that turned free): the cell flips.
+	// Free again beside structure after the wait (a grazed cell that turned
+	// free): the cell flips.
 	if (before == CellEvent::Leaving) grid.markFlipped(idx);
 	grid.setEvent(idx, CellEvent::None);
 }

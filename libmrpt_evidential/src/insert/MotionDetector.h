@@ -112,11 +112,13 @@ struct TMotionRules
  *   its body still stands within the clearance (masses stronger than the
  *   defaults turn a cell in fewer sights) are reported once it has moved
  *   on. Only a leaving cell waits, not a pending arrival seen free (both
- *   are Leaving and lean free: the detector lists the leaving ones). An
- *   arrival stays while its thing does; a departure seen free again after
- *   its window is over.
+ *   are Leaving and lean free: the detector lists the leaving ones). A
+ *   pending arrival seen free is no departure, wherever it lies: it was
+ *   never reported, and the cell flips. An arrival stays while its thing
+ *   does; a departure seen free again after its window is over.
  * - Far from the sensor the clearances grow: an error of the heading moves
- *   a face by more there (TMotionRules::kHeadingError).
+ *   a face by more there (TMotionRules::kHeadingError), and the edge of
+ *   what was never seen free (an arrival's reach to it grows the same way).
  * - A misplaced scan: when a large share of the cells a scan's beams ended
  *   in were seen free before (kMisplacedShare of them, and at least
  *   kMisplacedArrivals), the scan disagrees with the map as a whole. That
