@@ -296,7 +296,9 @@ class CMotionDetector
 	/** Cells set Leaving as departures under way, sorted, at their indices
 	 * in the grid of layout `m_listedLayout` (a grid whose cells moved starts
 	 * the list again; its leaving cells are then judged as pending arrivals
-	 * are); those set by the scan being settled, merged once it is. A cell
+	 * are, and a departure under way when the grid was copied into a larger
+	 * block, a few times in a long run, goes unreported); those set by the
+	 * scan being settled, merged once it is. A cell
 	 * judged since may stay listed until the list is pruned (settle()). */
 	std::vector<std::size_t> m_leaving, m_scanLeaving;
 	/** The list's length after its latest pruning, and the growth beyond
