@@ -198,6 +198,31 @@ TEST(GridStorage, LayoutChangesWhenTheCellsMove)
 	EXPECT_NE(s.layout(), grown);
 }
 
+TEST(GridStorage, GrowthIntoANewBlockSaysWhereEachCellWent)
+{
+	EvidentialGridStorage s;
+	s.reset(0.0, 1.0, 0.0, 1.0, 0.1, 10000);
+	EXPECT_EQ(s.grownFromLayout(), 0u) << "no growth yet";
+	const std::size_t first = s.layout();
+	const GridGeometry before = s.geometry();
+	ASSERT_TRUE(s.growToInclude(-0.35, 1.0, -0.2, 1.25, 0.0, 10000));
+	ASSERT_NE(s.layout(), first) << "a new block";
+	EXPECT_EQ(s.grownFromLayout(), first);
+	const GridGeometry& now = s.geometry();
+	for (const auto& [cx, cy] : {std::pair{0, 0}, std::pair{9, 0}, std::pair{4, 7}, std::pair{9, 9}})
+	{
+		const std::size_t moved = s.indexAfterGrowth(before.index(cx, cy));
+		EXPECT_DOUBLE_EQ(now.cellCenterX(now.columnOf(moved)), before.cellCenterX(cx));
+		EXPECT_DOUBLE_EQ(now.cellCenterY(now.rowOf(moved)), before.cellCenterY(cy));
+	}
+	const std::size_t grown = s.layout();
+	ASSERT_TRUE(s.growToInclude(-0.35, 1.1, -0.2, 1.25, 0.0, 10000));
+	EXPECT_EQ(s.layout(), grown) << "into the room kept";
+	EXPECT_EQ(s.grownFromLayout(), first) << "still the latest growth into a block";
+	s.reset(0.0, 1.0, 0.0, 1.0, 0.1, 10000);
+	EXPECT_EQ(s.grownFromLayout(), 0u) << "a reset is no growth";
+}
+
 TEST(GridStorage, DecayFollowsTheExponentialLaw)
 {
 	EvidentialGridStorage s;

@@ -352,3 +352,24 @@ TEST_F(DetectorOnAGrid, ArrivalsStayListedWhileTheGridGrowsIntoItsRoom)
 	insertion(1.1, [] {});
 	EXPECT_EQ(grid.event(cell), CellEvent::Disappeared);
 }
+
+TEST_F(DetectorOnAGrid, ArrivalsStayListedWhenTheGridGrowsIntoANewBlock)
+{
+	// Growth to the left, beyond the block: every cell moves to another
+	// index, and the list of arrivals follows it.
+	const std::size_t before = grid.geometry().index(3, 3);  // away from the wall
+	for (int k = 0; k < 3; ++k)
+		insertion(0.6 + 0.1 * k, [&] { fuse(before, Mass::simpleFree(0.9), false); });
+	insertion(1.0, [&] { fuse(before, Mass::simpleOccupied(0.9), true); });
+	ASSERT_EQ(grid.event(before), CellEvent::Appeared);
+	const std::size_t layout = grid.layout();
+
+	ASSERT_TRUE(grid.growToInclude(-0.5, 1.0, 0.0, 1.0, 0.0, 100000));
+	ASSERT_NE(grid.layout(), layout) << "a new block";
+	const std::size_t cell = grid.geometry().index(13, 3);
+	ASSERT_EQ(grid.indexAfterGrowth(before), cell);
+	ASSERT_EQ(grid.event(cell), CellEvent::Appeared);
+	crossedWithoutFreeEvidence = [&](std::size_t idx) { return idx == cell; };
+	insertion(1.1, [] {});
+	EXPECT_EQ(grid.event(cell), CellEvent::Disappeared);
+}

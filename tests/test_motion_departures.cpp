@@ -202,3 +202,22 @@ TEST_F(DetectorOnAGrid, GrazedFaceOfAThinThingIsNoDeparture)
 	expectNoDepartureWhileTheFaceWaits(turnedFreeAt, face);
 	EXPECT_EQ(grid.event(face), CellEvent::None);
 }
+
+TEST_F(DetectorOnAGrid, DepartureUnderWayFollowsTheGridIntoANewBlock)
+{
+	// A thing that stood leaves; while its cell still leans occupied the
+	// grid grows into a new block, moving every cell. Its departure is
+	// reported all the same, not taken for a pending arrival turned down.
+	const std::size_t thing = grid.geometry().index(10, 9);
+	thingStandsFromOneSecond(thing);
+	insertion(2.0, [&] { fuse(thing, Mass::simpleFree(0.7), false); });
+	ASSERT_TRUE(leansOccupied(grid.read(thing)));
+	ASSERT_EQ(grid.event(thing), CellEvent::Leaving);
+
+	ASSERT_TRUE(grid.growToInclude(-0.5, 1.0, 0.0, 1.0, 0.0, 100000));
+	const std::size_t cell = grid.geometry().index(20, 9);
+	ASSERT_EQ(grid.event(cell), CellEvent::Leaving);
+	const double t = seeFreeUntilNoneLeansOccupied(2.1, {cell});
+	insertion(t, [&] { fuse(cell, Mass::simpleFree(0.7), false); });
+	EXPECT_EQ(grid.event(cell), CellEvent::Disappeared);
+}

@@ -63,6 +63,7 @@ void EvidentialGridStorage::reset(
 	m_geometry = {xMin, yMin, resolution, static_cast<int>(sx), static_cast<int>(sy)};
 	m_cells = CellBlock(m_geometry.cellCount());
 	m_layout = newLayout();
+	m_grownFrom = {};
 	m_stampTimes.assign(1, 0.0);
 	m_stampGain.assign(1, 1.0);
 	m_presentGain = 1.0;
@@ -156,6 +157,7 @@ bool EvidentialGridStorage::growToInclude(
 		m_cells, g.index(0, 0), g.stride(), grown.index(dx, dy), grown.stride(),
 		static_cast<std::size_t>(g.sizeX), static_cast<std::size_t>(g.sizeY));
 	m_cells = std::move(cells);
+	m_grownFrom = {m_layout, g, dx, dy};
 	m_geometry = grown;
 	writeOnlyTheGrid();
 	m_layout = newLayout();
@@ -389,6 +391,7 @@ void EvidentialGridStorage::assign(
 	m_cells = CellBlock(cells.size());
 	m_cells.copyWritten(cells.data(), cells.size(), 0);
 	m_layout = newLayout();
+	m_grownFrom = {};
 	m_stampTimes = std::move(stampTimes);
 	m_insertions = insertions;
 	m_decayRate = decayRate;

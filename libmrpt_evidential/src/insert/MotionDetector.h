@@ -165,11 +165,22 @@ class CMotionDetector
 	template <typename Crossed>
 	void judgeCrossedArrivals(const EvidentialGridStorage& grid, Crossed&& crossed)
 	{
-		// A grid whose cells moved (reset, read from a file, grown into a new
-		// block) has them at other indices: the list starts again (its
-		// arrivals then last their window at most). Growth into the room
-		// the grid kept moves no cell.
-		if (grid.layout() != m_listedLayout) m_arrivals.clear(), m_leaving.clear(), m_leavingKept = 0;
+		// A grid grown into a new block keeps its cells where they were, at
+		// other indices: the lists follow them. One reset or read from a
+		// file holds other cells: the lists start again (its arrivals then
+		// last their window at most). Growth into the room the grid kept
+		// moves no cell.
+		if (grid.layout() != m_listedLayout)
+		{
+			if (m_listedLayout != 0 && grid.grownFromLayout() == m_listedLayout)
+			{
+				// The same order: a cell's row and column move by constants.
+				for (std::size_t& idx : m_arrivals) idx = grid.indexAfterGrowth(idx);
+				for (std::size_t& idx : m_leaving) idx = grid.indexAfterGrowth(idx);
+			}
+			else
+				m_arrivals.clear(), m_leaving.clear(), m_leavingKept = 0;
+		}
 		m_listedLayout = grid.layout();
 		std::size_t kept = 0;
 		for (const std::size_t idx : m_arrivals)
@@ -294,11 +305,10 @@ class CMotionDetector
 	 * at their indices in the grid of layout `m_listedLayout`. */
 	std::vector<std::size_t> m_arrivals;
 	/** Cells set Leaving as departures under way, sorted, at their indices
-	 * in the grid of layout `m_listedLayout` (a grid whose cells moved starts
-	 * the list again; its leaving cells are then judged as pending arrivals
-	 * are, and a departure under way when the grid was copied into a larger
-	 * block, a few times in a long run, goes unreported); those set by the
-	 * scan being settled, merged once it is. A cell
+	 * in the grid of layout `m_listedLayout` (followed when the grid grows
+	 * into a new block; a grid reset or read from a file starts the list
+	 * again, and its leaving cells are then judged as pending arrivals are);
+	 * those set by the scan being settled, merged once it is. A cell
 	 * judged since may stay listed until the list is pruned (settle()). */
 	std::vector<std::size_t> m_leaving, m_scanLeaving;
 	/** The list's length after its latest pruning, and the growth beyond

@@ -102,6 +102,18 @@ class EvidentialGridStorage
 	 * number): while it stays, an index kept from an earlier insertion names
 	 * the same cell, growth into the kept room included. */
 	std::size_t layout() const { return m_layout; }
+	/** The layout the grid had just before its latest growth into a new
+	 * block; 0 when its layout last changed otherwise (reset(), assign()). */
+	std::size_t grownFromLayout() const { return m_grownFrom.layout; }
+	/** The index now of the cell whose index was `before` in layout
+	 * grownFromLayout(): growth keeps every cell where it is. `before` must
+	 * name a cell of that layout's grid. */
+	std::size_t indexAfterGrowth(std::size_t before) const
+	{
+		const GridGeometry& was = m_grownFrom.geometry;
+		return m_geometry.index(
+			was.columnOf(before) + m_grownFrom.dx, was.rowOf(before) + m_grownFrom.dy);
+	}
 
 	/** Decay rate, per second of data time, >= 0 (0: no decay).
 	 * \throws std::invalid_argument if negative or not finite. */
@@ -513,6 +525,14 @@ class EvidentialGridStorage
 	CellBlock m_cells;
 	/** See layout(); 0 for the empty grid of the default constructor. */
 	std::size_t m_layout = 0;
+	/** The latest growth into a new block: the layout and geometry before
+	 * it, and the columns and rows it added before the old cells. */
+	struct TGrowth
+	{
+		std::size_t layout = 0;
+		GridGeometry geometry;
+		int dx = 0, dy = 0;
+	} m_grownFrom;
 	double m_decayRate = 0.0;
 	bool m_keepsConflict = true;
 	/** Every cell vacuous since reset(), no insertion begun and nothing
