@@ -168,23 +168,20 @@ void mrptRun(benchmark::State& state, bool widening)
 
 void registerRunCases()
 {
-	const auto add = [](const std::string& caseName, auto fn, Timing timing) {
-		addCase(caseName, fn, timing);
-	};
 	for (const TPath& path : paths())
 		for (const bool presized : {false, true})
 		{
 			const std::string at = path.name + (presized ? "/presized" : "/growing") + "/stock/0.05m";
-			add("mrpt/" + at, [=](benchmark::State& s) { mrptPath(s, path, presized); },
+			addCase("mrpt/" + at, [=](benchmark::State& s) { mrptPath(s, path, presized); },
 				Timing::WholePath);
-			add("ours/" + at, [=](benchmark::State& s) { ourPath(s, path, presized); },
+			addCase("ours/" + at, [=](benchmark::State& s) { ourPath(s, path, presized); },
 				Timing::WholePath);
 		}
-	add("mrpt/senarun/plain/0.05m", [](benchmark::State& s) { mrptRun(s, false); },
+	addCase("mrpt/senarun/plain/0.05m", [](benchmark::State& s) { mrptRun(s, false); },
 		Timing::WholePath);
-	add("mrpt/senarun/widening/0.05m", [](benchmark::State& s) { mrptRun(s, true); },
+	addCase("mrpt/senarun/widening/0.05m", [](benchmark::State& s) { mrptRun(s, true); },
 		Timing::WholePath);
-	add("ours/senarun/growing/0.05m", ourRun, Timing::WholePath);
+	addCase("ours/senarun/growing/0.05m", ourRun, Timing::WholePath);
 }
 
 void printRunRatios(const std::map<std::string, double>& microseconds)

@@ -116,6 +116,29 @@ class DetectorOnAGrid : public ::testing::Test
 			if (impacts) grid.markImpact(standing);
 		}
 	}
+	/** The same hit seen from close by (a sensor within a metre, where the
+	 * clearances are the rules' own) and from 12 m (where a degree of the
+	 * heading's error moves a face by four cells): on a fresh grid that
+	 * `prepare` readies, returning the cell to hit, an arrival at once from
+	 * close by and only pending from afar. */
+	void expectArrivalFromCloseByPendingFromAfar(
+		const std::function<std::size_t(const GridGeometry&)>& prepare)
+	{
+		struct TCase
+		{
+			double sensorX;
+			CellEvent arrival;
+		};
+		for (const TCase c : {TCase{0.5, CellEvent::Appeared}, TCase{-11.5, CellEvent::Leaving}})
+		{
+			SCOPED_TRACE(testing::Message() << "sensor at x " << c.sensorX);
+			sensor = {c.sensorX, 0.5};
+			grid.reset(0.0, 1.0, 0.0, 1.0, 0.05, 1000);
+			const std::size_t cell = prepare(grid.geometry());
+			insertion(1.0, [&] { fuse(cell, Mass::simpleOccupied(0.9), true); });
+			EXPECT_EQ(grid.event(cell), c.arrival);
+		}
+	}
 	/** Beams' ends on a thing's face in the open, from four cells from the
 	 * floor cell (within thingCells) and six from the wall to two from the
 	 * floor cell (within faceGapCells): the part of a thing that moves which

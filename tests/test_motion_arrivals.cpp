@@ -186,50 +186,25 @@ TEST_F(DetectorOnAGrid, ArrivalBesideWhatTheMapSawFreeBeforeItLeanedOccupied)
 // change that close to structure is the pose's error.
 TEST_F(DetectorOnAGrid, ArrivalsReachToAFaceGrowsWithTheRange)
 {
-	// A hit two cells from a thing that stands: an arrival at once seen from
-	// close by (as above), pending seen from 12 m.
-	struct TCase
-	{
-		double sensorX;
-		CellEvent arrival;
-	};
-	for (const TCase c : {TCase{0.5, CellEvent::Appeared}, TCase{-11.5, CellEvent::Leaving}})
-	{
-		SCOPED_TRACE(testing::Message() << "sensor at x " << c.sensorX);
-		sensor = {c.sensorX, 0.5};
-		grid.reset(0.0, 1.0, 0.0, 1.0, 0.05, 1000);
-		const GridGeometry& g = grid.geometry();
-		const std::size_t standing = g.index(5, 5), cell = g.index(7, 5);
-		standBesideSeenFreeFloor(standing, true);
-		insertion(1.0, [&] { fuse(cell, Mass::simpleOccupied(0.9), true); });
-		EXPECT_EQ(grid.event(cell), c.arrival);
-	}
+	// A hit two cells from a thing that stands (as above).
+	expectArrivalFromCloseByPendingFromAfar([&](const GridGeometry& g) {
+		standBesideSeenFreeFloor(g.index(5, 5), true);
+		return g.index(7, 5);
+	});
 }
 
 TEST_F(DetectorOnAGrid, ArrivalsReachToCellsNeverSeenFreeGrowsWithTheRange)
 {
 	// A hit four cells from the edge of what was never seen free (an unseen
-	// room's inside): an arrival seen from close by, pending seen from 12 m,
-	// where a degree of the heading's error moves that edge by as much.
-	struct TCase
-	{
-		double sensorX;
-		CellEvent arrival;
-	};
-	for (const TCase c : {TCase{0.5, CellEvent::Appeared}, TCase{-11.5, CellEvent::Leaving}})
-	{
-		SCOPED_TRACE(testing::Message() << "sensor at x " << c.sensorX);
-		sensor = {c.sensorX, 0.5};
-		grid.reset(0.0, 1.0, 0.0, 1.0, 0.05, 1000);
-		const GridGeometry& g = grid.geometry();
+	// room's inside, columns 0 to 4), which a degree of the heading's error
+	// moves by as much from 12 m.
+	expectArrivalFromCloseByPendingFromAfar([&](const GridGeometry& g) {
 		insertion(0.0, [&] {
 			for (int y = 0; y < g.sizeY; ++y)
 				for (int x = 5; x < g.sizeX; ++x) fuse(g.index(x, y), Mass::simpleFree(0.7), false);
 		});
-		const std::size_t cell = g.index(8, 10);
-		insertion(0.1, [&] { fuse(cell, Mass::simpleOccupied(0.9), true); });
-		EXPECT_EQ(grid.event(cell), c.arrival);
-	}
+		return g.index(8, 10);
+	});
 }
 
 TEST_F(DetectorOnAGrid, ThingThatArrivedLongAgoIsNoStructure)
