@@ -24,12 +24,16 @@ CMotionScorer::CMotionScorer(const CMotionTruth& truth, int tolerance)
 void CMotionScorer::score(
 	const mrpt_evidential::CEvidentialGridMap2D& map,
 	const CObservedCells& seen, const CTruthEvents& events, std::size_t k,
-	double time)
+	double time, const mrpt::poses::CPose2D& toMap)
 {
 	const int cells = static_cast<int>(m_grid.cellCount());
+	const bool moved = toMap.x() != 0.0 || toMap.y() != 0.0 || toMap.phi() != 0.0;
 	for (int cell = 0; cell < cells; ++cell)
-		m_motion[cell] =
-			map.getCellMotion(m_grid.centreX(cell), m_grid.centreY(cell));
+	{
+		double x = m_grid.centreX(cell), y = m_grid.centreY(cell);
+		if (moved) toMap.composePoint(x, y, x, y);
+		m_motion[cell] = map.getCellMotion(x, y);
+	}
 	++m_totals.scans;
 	m_totals.hitCells += seen.hit().size();
 	m_totals.crossedCells += seen.crossed().size();
@@ -47,7 +51,7 @@ void CMotionScorer::score(
 	scoreKind(
 		Motion::Disappeared, m_truth, seen.observed(),
 		[&](int cell) { return events.disappeared(cell); }, m_totals.disappeared);
-	scoreStatic(seen, k, time);
+	scoreStatic(map, seen, k, time);
 }
 
 void CMotionScorer::scoreKind(
@@ -86,14 +90,18 @@ void CMotionScorer::scoreKind(
 }
 
 void CMotionScorer::scoreStatic(
-	const CObservedCells& seen, std::size_t k, double time)
+	const mrpt_evidential::CEvidentialGridMap2D& map, const CObservedCells& seen,
+	std::size_t k, double time)
 {
+	const auto flags = [&](int cell) {
+		return map.getCellMotion(m_grid.centreX(cell), m_grid.centreY(cell)) != Motion::None;
+	};
 	std::size_t observed = 0, flagged = 0;
 	for (const int cell : seen.observed())
 	{
 		if (!m_static[cell]) continue;
 		++observed;
-		flagged += m_motion[cell] != Motion::None;
+		flagged += flags(cell);
 	}
 	TStaticScore& s = m_totals.statics;
 	s.observed += observed;
@@ -110,7 +118,7 @@ void CMotionScorer::scoreStatic(
 		s.worstTime = time;
 		s.worstCells.clear();
 		for (const int cell : seen.observed())
-			if (m_static[cell] && m_motion[cell] != Motion::None)
+			if (m_static[cell] && flags(cell))
 				s.worstCells.emplace_back(m_grid.centreX(cell), m_grid.centreY(cell));
 	}
 }

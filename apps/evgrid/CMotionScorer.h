@@ -4,6 +4,7 @@
 
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 #include <mrpt_evidential/Motion.h>
+#include <mrpt/poses/CPose2D.h>
 
 #include <cstddef>
 #include <functional>
@@ -71,11 +72,14 @@ class CMotionScorer
 	CMotionScorer(const CMotionTruth& truth, int tolerance);
 
 	/** Scores the map just after it took scan k, at `time` (seconds from
-	 * scan 0), whose observed cells are `seen`, the truth being at scan k. */
+	 * scan 0), whose observed cells are `seen`, the truth being at scan k.
+	 * The motion of a truth cell is read in the map at `toMap` composed
+	 * with its centre (the identity: at the centre itself); the static
+	 * cells' at their centres. */
 	void score(
 		const mrpt_evidential::CEvidentialGridMap2D& map,
 		const CObservedCells& seen, const CTruthEvents& events, std::size_t k,
-		double time);
+		double time, const mrpt::poses::CPose2D& toMap = {});
 
 	const TMotionScore& totals() const { return m_totals; }
 
@@ -86,12 +90,16 @@ class CMotionScorer
 		mrpt_evidential::Motion kind, const std::vector<int>& truth,
 		const std::vector<int>& observed, const std::function<bool(int)>& isTruth,
 		TKindScore& out);
-	void scoreStatic(const CObservedCells& seen, std::size_t k, double time);
+	/** The static cells the scan observed, the map read at their centres. */
+	void scoreStatic(
+		const mrpt_evidential::CEvidentialGridMap2D& map, const CObservedCells& seen,
+		std::size_t k, double time);
 
 	const TTruthGrid& m_grid;
 	int m_tolerance;
 	std::vector<bool> m_static;
-	/** The map's motion at each truth cell's centre, this scan. */
+	/** The map's motion at each truth cell's centre (moved into the scan's
+	 * frame when asked), this scan. */
 	std::vector<mrpt_evidential::Motion> m_motion;
 	CNearCells m_near;
 	std::vector<int> m_truth, m_truthWhole, m_predicted, m_whole;

@@ -3,9 +3,12 @@
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
+#include <cstddef>
+#include <initializer_list>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace evgrid
 {
@@ -37,6 +40,26 @@ std::string requireMapFile(const std::string& value);
 
 /** The whole (non-empty) text as a finite number, or nothing. */
 std::optional<double> toNumber(const std::string& text);
+
+/** The value that `text`, given to `option`, names among `choices` (each a
+ * name and its value).
+ * \throws UsageError "OPTION must be A, B or C, got 'TEXT'" when it names
+ *  none. */
+template <typename T>
+T oneOf(
+	const std::string& option, const std::string& text,
+	std::initializer_list<std::pair<const char*, T>> choices)
+{
+	std::string names;
+	std::size_t i = 0;
+	for (const auto& [name, value] : choices)
+	{
+		if (text == name) return value;
+		names += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + std::string(name);
+		++i;
+	}
+	throw UsageError(option + " must be " + names + ", got '" + text + "'");
+}
 
 /** Throws UsageError unless `value` >= `minimum`. */
 void requireAtLeast(const std::string& option, int value, int minimum);

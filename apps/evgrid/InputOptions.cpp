@@ -66,13 +66,11 @@ TInputOptions CInputArgs::values()
 	options.poses = m_poses.getValue();
 	options.poseTolerance = m_tolerance.getValue();
 
-	const std::string& format = m_posesFormat.getValue();
-	if (format == "auto") options.posesKind = CPoseFile::Kind::Auto;
-	else if (format == "time") options.posesKind = CPoseFile::Kind::Time;
-	else if (format == "step") options.posesKind = CPoseFile::Kind::Step;
-	else
-		throw UsageError(
-			"--poses-format must be auto, time or step, got '" + format + "'");
+	options.posesKind = oneOf<CPoseFile::Kind>(
+		"--poses-format", m_posesFormat.getValue(),
+		{{"auto", CPoseFile::Kind::Auto},
+		 {"time", CPoseFile::Kind::Time},
+		 {"step", CPoseFile::Kind::Step}});
 	if (m_posesFormat.isSet() && options.poses.empty())
 		throw UsageError("--poses-format needs --poses");
 	if (!(options.poseTolerance >= 0.0))

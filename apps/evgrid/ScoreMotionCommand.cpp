@@ -5,6 +5,7 @@
 
 #include <mrpt/core/Clock.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -50,7 +51,9 @@ std::optional<int> parseOptions(
 	TCLAP::ValueArg<int> argTolerance(
 		"", "tolerance",
 		"A predicted cell and a truth cell of the same kind match within "
-		"this many cells (Chebyshev distance). At least 0, default 1.",
+		"this many cells of the truth's grid (Chebyshev distance). At least "
+		"0; default: one cell of the map (1 for a map of the truth's "
+		"resolution, 2 for one twice as coarse).",
 		false, 1, "CELLS", cmd);
 	TCLAP::ValueArg<std::string> argTruth(
 		"", "truth",
@@ -73,6 +76,17 @@ std::optional<int> parseOptions(
 		"the poses of -p. Without it they are traced at the map's poses, and "
 		"the map's pose error also displaces the truth.",
 		false, "", "FILE", cmd);
+	TCLAP::ValueArg<std::string> argMotionFrame(
+		"", "motion-frame",
+		"Where the map's motion is read for a cell of the truth: 'world' "
+		"(default), at the cell itself; 'scan', where the scored scan's pose "
+		"estimate (-p) puts the cell, that is the cell moved by that "
+		"estimate's error against the true pose (needs --truth-poses). The "
+		"map puts what a scan saw where its pose estimate says: 'scan' leaves "
+		"that error out of the motion's scores. Walls and furniture are read "
+		"at their own cells either way (the static map averages the errors "
+		"of many scans).",
+		false, "world", "world|scan", cmd);
 	CInputArgs inputArgs(cmd);
 
 	if (const auto exitCode = parse(cmd, kScoreMotionName, argc, argv, first))
@@ -81,15 +95,21 @@ std::optional<int> parseOptions(
 	options.truth = argTruth.getValue();
 	if (options.truth.empty())
 		throw UsageError("missing the truth: --truth PREFIX.motion.gz");
-	const std::string& times = argTruthTimes.getValue();
-	if (times == "observed") options.truthTimes = TruthTimes::Observed;
-	else if (times == "physical") options.truthTimes = TruthTimes::Physical;
-	else
-		throw UsageError(
-			"--truth-times must be observed or physical, got '" + times + "'");
+	options.truthTimes = oneOf<TruthTimes>(
+		"--truth-times", argTruthTimes.getValue(),
+		{{"observed", TruthTimes::Observed}, {"physical", TruthTimes::Physical}});
 	options.truthPoses = argTruthPoses.getValue();
-	options.tolerance = argTolerance.getValue();
-	requireAtLeast("--tolerance", options.tolerance, 0);
+	options.motionFrame = oneOf<MotionFrame>(
+		"--motion-frame", argMotionFrame.getValue(),
+		{{"world", MotionFrame::World}, {"scan", MotionFrame::Scan}});
+	if (options.motionFrame == MotionFrame::Scan && options.truthPoses.empty())
+		throw UsageError(
+			"--motion-frame scan needs the true poses: --truth-poses PREFIX.gt.txt");
+	if (argTolerance.isSet())
+	{
+		options.tolerance = argTolerance.getValue();
+		requireAtLeast("--tolerance", *options.tolerance, 0);
+	}
 	options.report = reportArgs.values();
 	return std::nullopt;
 }
@@ -113,8 +133,11 @@ class CReplay
 			  options.truthPoses.empty()
 				  ? std::nullopt
 				  : std::optional(CPoseFile::load(options.truthPoses, CPoseFile::Kind::Time))),
+		  m_motionFrame(options.motionFrame),
 		  m_seen(truth.grid()),
-		  m_scorer(truth, options.tolerance)
+		  m_tolerance(options.tolerance.value_or(std::max(
+			  1, static_cast<int>(std::lround(map.getResolution() / truth.grid().resolution))))),
+		  m_scorer(truth, m_tolerance)
 	{
 	}
 
@@ -153,9 +176,15 @@ class CReplay
 			return;
 		}
 		++m_counts.scored;
-		m_seen.trace(scan, tracedPose(k, stamp, *pose), m_map.insertionOptions.maxRange);
+		const mrpt::poses::CPose3D traced = tracedPose(k, stamp, *pose);
+		m_seen.trace(scan, traced, m_map.insertionOptions.maxRange);
 		m_events->observe(m_seen);
-		m_scorer.score(m_map, m_seen, *m_events, k, records[k].time);
+		// The estimate's error: a point where the scan really saw it to
+		// where the estimate puts it.
+		const mrpt::poses::CPose2D toMap = m_motionFrame == MotionFrame::Scan
+			? mrpt::poses::CPose2D(*pose) + (-mrpt::poses::CPose2D(traced))
+			: mrpt::poses::CPose2D();
+		m_scorer.score(m_map, m_seen, *m_events, k, records[k].time, toMap);
 	}
 
 	/** \throws std::runtime_error if the input has fewer scans than the
@@ -183,6 +212,7 @@ class CReplay
 		return m_truePoses ? "true poses, " + m_truePoses->path() : "the map's poses";
 	}
 	const TMotionScore& score() const { return m_scorer.totals(); }
+	int tolerance() const { return m_tolerance; }
 
    private:
 	/** \throws std::runtime_error if the true poses have none at the scan's
@@ -206,7 +236,9 @@ class CReplay
 	const CInputWalker& m_input;
 	std::unique_ptr<CTruthEvents> m_events;
 	std::optional<CPoseFile> m_truePoses;
+	MotionFrame m_motionFrame;
 	CObservedCells m_seen;
+	int m_tolerance;
 	CMotionScorer m_scorer;
 	TReplayCounts m_counts;
 };
@@ -240,6 +272,7 @@ void scoreMotion(const TScoreMotionOptions& options)
 	run.poses = poses.description();
 	run.tracedAt = replay.tracedAt();
 	run.motionWindow = map->insertionOptions.motionWindow;
+	run.tolerance = replay.tolerance();
 	run.scans = replay.counts();
 	run.score = replay.score();
 	writeReport(

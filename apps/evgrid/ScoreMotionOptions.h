@@ -2,6 +2,7 @@
  * them. */
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "CTruthEvents.h"
@@ -19,6 +20,21 @@ inline const char* truthTimesName(TruthTimes times)
 	return times == TruthTimes::Physical ? "physical" : "observed";
 }
 
+/** Where the map's motion is read for a cell of the truth: World, at the
+ * cell itself; Scan, where the scored scan's pose estimate puts it (the
+ * cell moved by that estimate's error against the true pose). */
+enum class MotionFrame
+{
+	World,
+	Scan
+};
+
+/** The value of --motion-frame that selects `frame`. */
+inline const char* motionFrameName(MotionFrame frame)
+{
+	return frame == MotionFrame::Scan ? "scan" : "world";
+}
+
 struct TScoreMotionOptions
 {
 	TInputOptions source;
@@ -28,9 +44,12 @@ struct TScoreMotionOptions
 	/** The scene's true poses (PREFIX.gt.txt, by time stamp) that the scans'
 	 * cells are traced at; empty: at the map's own poses. */
 	std::string truthPoses;
-	/** Cells (Chebyshev) within which a prediction and a truth cell match,
-	 * >= 0. */
-	int tolerance = 1;
+	/** Scan needs truthPoses. */
+	MotionFrame motionFrame = MotionFrame::World;
+	/** Cells of the truth's grid (Chebyshev) within which a prediction and
+	 * a truth cell match, >= 0; unset: one cell of the map (the map places
+	 * nothing more finely). */
+	std::optional<int> tolerance;
 	TReportOptions report;
 };
 

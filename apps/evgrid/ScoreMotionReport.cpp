@@ -43,6 +43,14 @@ struct TRatios
 	}
 };
 
+/** What the console says of each frame. */
+std::string motionFrameText(MotionFrame frame)
+{
+	return frame == MotionFrame::Scan
+		? "scan (each truth cell where the scan's pose estimate puts it; walls at their cells)"
+		: "world (the truth's cells themselves)";
+}
+
 /** What the console says of each dating. */
 std::string truthTimesText(TruthTimes times)
 {
@@ -127,10 +135,12 @@ void printMotionReport(
 	   << " without a pose, " << n.refused << " refused by the map, "
 	   << n.scored << " inserted and scored\n"
 	   << "motion window: " << shortestText(run.motionWindow)
-	   << " s (the map's motionWindow); tolerance: " << options.tolerance
-	   << (options.tolerance == 1 ? " cell" : " cells") << " (Chebyshev)\n"
+	   << " s (the map's motionWindow); tolerance: " << run.tolerance
+	   << (run.tolerance == 1 ? " cell" : " cells") << " (Chebyshev)"
+	   << (options.tolerance ? "" : ", one of the map's") << "\n"
 	   << "truth times: " << truthTimesText(options.truthTimes) << "\n"
 	   << "observed cells traced at: " << run.tracedAt << "\n"
+	   << "motion read at: " << motionFrameText(options.motionFrame) << "\n"
 	   << "observed cells, summed over the scans: " << s.hitCells
 	   << " hit (a beam's end), " << s.crossedCells << " crossed\n\n";
 
@@ -173,9 +183,10 @@ void writeMotionKeyValues(
 	   << "truth_scans " << truth.scans().size() << "\n"
 	   << "truth_grid " << truthGrid(truth.grid()) << "\n"
 	   << "motion_window_s " << shortestText(run.motionWindow) << "\n"
-	   << "tolerance_cells " << options.tolerance << "\n"
+	   << "tolerance_cells " << run.tolerance << "\n"
 	   << "truth_times " << truthTimesName(options.truthTimes) << "\n"
 	   << "traced_at " << run.tracedAt << "\n"
+	   << "motion_frame " << motionFrameName(options.motionFrame) << "\n"
 	   << "scans_total " << n.total << "\n"
 	   << "scans_without_pose " << n.withoutPose << "\n"
 	   << "scans_refused " << n.refused << "\n"

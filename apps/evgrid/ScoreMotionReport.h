@@ -28,6 +28,9 @@ struct TScoreMotionRecord
 	std::string tracedAt;
 	/** The map's insertionOptions.motionWindow, seconds. */
 	double motionWindow = 0;
+	/** Cells of the truth's grid within which a prediction and a truth
+	 * cell match. */
+	int tolerance = 1;
 	TReplayCounts scans;
 	TMotionScore score;
 };

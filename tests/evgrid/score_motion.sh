@@ -4,7 +4,9 @@
 # other and with stdout, that more tolerance never matches less, that the
 # static scene has no truth event under either dating of the truth (and that
 # its walls' flags are located, without a clearance), that the
-# two datings differ on people and change the truth only, that a map that
+# two datings differ on people and change the truth only, that the motion
+# read in each scan's frame is the world's at exact poses and leaves the truth
+# and the walls' share alone, that the default tolerance is one map cell, that a map that
 # keeps conflict flags nothing,
 # that a truth of another input, a shifted or a truncated one is an error
 # that leaves an earlier --output as it was, and the usage errors. The F1
@@ -58,7 +60,7 @@ check_worst_cells() {
 check_report() {
   local f=$1 s=$2 key kind t r p tp m pr rc f1
   for key in input poses config truth truth_scene truth_scans truth_grid motion_window_s \
-    tolerance_cells truth_times scans_total scans_without_pose scans_refused scans_scored \
+    tolerance_cells truth_times traced_at motion_frame scans_total scans_without_pose scans_refused scans_scored \
     observed_hit_cells observed_crossed_cells static_cells static_observed static_flagged \
     static_flagged_pct static_scans static_mean_pct static_worst_pct static_worst_scan \
     static_worst_time_s static_worst_cells; do
@@ -208,6 +210,43 @@ diff <(grep -v '^traced_at ' "$T/room-gt.txt") <(grep -v '^traced_at ' "$T/room-
 score room-true "$room" --truth-poses "$room.gt.txt"
 [ "$(value appeared_truth "$T/room-true.txt")" != "$(value appeared_truth "$T/room.txt")" ] ||
   fail "tracing at the true poses did not change the truth of the slam-posed run"
+
+# 3c. The motion read where each scan's pose estimate puts the truth's cells:
+#     at the true poses that is the cells themselves; at the SLAM-like poses
+#     the truth and the walls' share stay as they were, the predictions move.
+[ "$(value motion_frame "$T/room.txt")" = world ] || fail "room: motion not read in the world frame by default"
+run 0 "$EVGRID" score-motion -c "$T/normalize.ini" -i "$room.rawlog" -p "$room.gt.txt" \
+  --truth "$room.motion.gz" --truth-poses "$room.gt.txt" --motion-frame scan --output "$T/room-gt-scan.txt"
+diff <(grep -v '^motion_frame ' "$T/room-gt-traced.txt") <(grep -v '^motion_frame ' "$T/room-gt-scan.txt") >/dev/null ||
+  fail "reading the motion in the frame of exact poses changed the scores"
+score room-scan "$room" --truth-poses "$room.gt.txt" --motion-frame scan
+contains "$T/room-scan.stdout" "motion read at: scan (each truth cell where the scan's pose estimate puts it"
+for key in appeared_truth disappeared_truth static_observed static_flagged static_worst_pct; do
+  [ "$(value $key "$T/room-scan.txt")" = "$(value $key "$T/room-true.txt")" ] ||
+    fail "the scan frame changed $key"
+done
+[ "$(value appeared_predicted "$T/room-scan.txt") $(value appeared_true_positives "$T/room-scan.txt")" != \
+  "$(value appeared_predicted "$T/room-true.txt") $(value appeared_true_positives "$T/room-true.txt")" ] ||
+  fail "the scan frame read the same predictions as the world frame at SLAM-like poses"
+run 2 "$EVGRID" score-motion -i "$room.rawlog" --truth "$room.motion.gz" --motion-frame scan --output "$T/x.txt"
+contains "$ERR" "--motion-frame scan needs the true poses: --truth-poses PREFIX.gt.txt"
+run 2 "$EVGRID" score-motion -i "$room.rawlog" --truth "$room.motion.gz" --motion-frame robot --output "$T/x.txt"
+contains "$ERR" "--motion-frame must be world or scan, got 'robot'"
+
+# 3d. The default tolerance is one cell of the map: two of the truth's 0.05 m
+#     cells for a map of 0.10 m; --tolerance still sets it.
+sed 's/^resolution=.*/resolution=0.10/' "$T/normalize.ini" >"$T/coarse.ini"
+grep -qx "resolution=0.10" "$T/coarse.ini" || fail "no resolution line in $EVGRID_INI"
+run 0 "$EVGRID" score-motion -c "$T/coarse.ini" -i "$room.rawlog" -p "$room.slam.txt" \
+  --truth "$room.motion.gz" --output "$T/coarse.txt"
+[ "$(value tolerance_cells "$T/coarse.txt")" = 2 ] || fail "a 0.10 m map: tolerance not two truth cells"
+contains "$OUT" "tolerance: 2 cells (Chebyshev), one of the map's"
+run 0 "$EVGRID" score-motion -c "$T/coarse.ini" -i "$room.rawlog" -p "$room.slam.txt" \
+  --truth "$room.motion.gz" --tolerance 1 --output "$T/coarse-t1.txt"
+[ "$(value tolerance_cells "$T/coarse-t1.txt")" = 1 ] || fail "--tolerance 1 not kept for a 0.10 m map"
+[ "$(value appeared_recalled "$T/coarse-t1.txt")" -le "$(value appeared_recalled "$T/coarse.txt")" ] ||
+  fail "a 0.10 m map: one truth cell of tolerance recalled more than two"
+
 awk 'NR <= 100' "$room.gt.txt" >"$T/short.gt.txt"
 run 1 "$EVGRID" score-motion -c "$T/normalize.ini" -i "$room.rawlog" -p "$room.slam.txt" \
   --truth "$room.motion.gz" --truth-poses "$T/short.gt.txt" --output "$T/x.txt"
