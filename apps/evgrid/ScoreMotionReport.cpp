@@ -137,7 +137,7 @@ void printMotionReport(
 	   << "motion window: " << shortestText(run.motionWindow)
 	   << " s (the map's motionWindow); tolerance: " << run.tolerance
 	   << (run.tolerance == 1 ? " cell" : " cells") << " (Chebyshev)"
-	   << (options.tolerance ? "" : ", one of the map's") << "\n"
+	   << (options.tolerance ? "" : ", one map cell") << "\n"
 	   << "truth times: " << truthTimesText(options.truthTimes) << "\n"
 	   << "observed cells traced at: " << run.tracedAt << "\n"
 	   << "motion read at: " << motionFrameText(options.motionFrame) << "\n"
