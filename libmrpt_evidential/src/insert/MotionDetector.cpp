@@ -256,8 +256,9 @@ void CMotionDetector::settleDeparture(
 			grid.setEvent(idx, CellEvent::Disappeared);
 		return;
 	}
-	// Beside structure: a leaving cell waits for the thing to move on.
-	const bool waits = before == CellEvent::Leaving && isLeaving(idx) &&
+	// Beside structure: a leaving cell (a departure under way: the pending
+	// arrivals were settled above) waits for the thing to move on.
+	const bool waits = before == CellEvent::Leaving &&
 		grid.eventTime(idx) > insertionTimeBefore(grid, kDepartureWait);
 	if (waits) return;
 	// Free again beside structure after the wait (a grazed cell that turned
