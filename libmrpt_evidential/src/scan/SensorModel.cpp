@@ -142,6 +142,42 @@ double profileWeight(
 	return std::exp(-2.0 * x * x / (p.imprecision * p.imprecision));
 }
 
+/** appendSectorRow() for a sector of one impact (a 2-D scan's beam): the same
+ * masses, written once each, without the search for runs to join and the
+ * second pass that turns the product of ignorances into m(O). */
+TSectorLayout oneImpactRow(
+	const SensorModelParams& params, bool spread, double r, double binSize,
+	std::size_t nBins, std::vector<TBinRun>& runs, std::vector<Mass>& masses,
+	bool freeMassToo)
+{
+	TSectorLayout layout;
+	layout.firstRun = runs.size();
+	const Band band = occupiedBand(params, spread, r, binSize, nBins);
+	layout.freeBins = band.first;
+	layout.informedBins = band.first;
+	if (band.first > 0 && freeMassToo) layout.freeMass = params.muF;
+	if (band.first >= nBins) return layout;
+
+	const std::size_t end = std::min(band.last + 1, nBins);
+	TBinRun& run = runs.emplace_back();
+	run.begin = band.first, run.end = end, run.offset = masses.size();
+	layout.runCount = 1;
+	layout.informedBins = end;
+	if (params.model == SensorModel::MultiEcho)
+	{
+		masses.push_back(Mass::simpleOccupied(params.muO));
+		masses.resize(masses.size() + (end - band.first - 1), Mass::vacuous());
+		return layout;
+	}
+	for (std::size_t b = band.first; b < end; ++b)
+	{
+		Mass& m = masses.emplace_back();
+		m.unknown = 1.0 - params.muO * profileWeight(params, r, band.own, b, binSize);
+		m.occupied = 1.0 - m.unknown;
+	}
+	return layout;
+}
+
 }  // namespace
 
 namespace detail
@@ -154,6 +190,11 @@ TSectorLayout appendSectorRow(
 	TSectorLayout layout;
 	layout.firstRun = runs.size();
 	if (nImpacts == 0) return layout;
+	const bool spread = spreads(params);
+	// A 2-D scan's sector holds one beam's impact.
+	if (nImpacts == 1)
+		return oneImpactRow(
+			params, spread, sortedRanges[0], binSize, nBins, runs, masses, freeMassToo);
 
 	// Sorted impacts give bands sorted by their first bin. Runs hold the
 	// bands; bands a few bins apart share a run (its vacuous bins cost less
@@ -161,9 +202,8 @@ TSectorLayout appendSectorRow(
 	constexpr std::size_t kJoinGap = 8;
 	std::size_t firstOccupied = nBins;
 	// A sector of many impacts (a cloud's) has their bands worked out in
-	// chunks by the vector code; a few (a 2-D scan's one) are not worth the
-	// call.
-	const bool spread = spreads(params), chunked = spread && nImpacts >= kChunkFrom;
+	// chunks by the vector code; a few are not worth the call.
+	const bool chunked = spread && nImpacts >= kChunkFrom;
 	TBandChunk bands;
 	for (std::size_t i = 0; i < nImpacts; ++i)
 	{
@@ -212,7 +252,7 @@ TSectorLayout appendSectorRow(
 	layout.freeBins = firstOccupied;
 	// Every beam crossed the bins before the nearest band.
 	if (firstOccupied > 0 && freeMassToo)
-		layout.freeMass = params.model == SensorModel::MultiEcho || nImpacts == 1
+		layout.freeMass = params.model == SensorModel::MultiEcho
 			? params.muF
 			: 1.0 - std::pow(1.0 - params.muF, static_cast<double>(nImpacts));
 	layout.informedBins =
