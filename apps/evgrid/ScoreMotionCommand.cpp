@@ -9,6 +9,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <stdexcept>
 
 #include "CInputWalker.h"
@@ -95,13 +96,15 @@ std::optional<int> parseOptions(
 	options.truth = argTruth.getValue();
 	if (options.truth.empty())
 		throw UsageError("missing the truth: --truth PREFIX.motion.gz");
+	// The choices spelled as the report spells them.
+	const auto named = [](auto value, auto name) { return std::pair{name(value), value}; };
 	options.truthTimes = oneOf<TruthTimes>(
 		"--truth-times", argTruthTimes.getValue(),
-		{{"observed", TruthTimes::Observed}, {"physical", TruthTimes::Physical}});
+		{named(TruthTimes::Observed, truthTimesName), named(TruthTimes::Physical, truthTimesName)});
 	options.truthPoses = argTruthPoses.getValue();
 	options.motionFrame = oneOf<MotionFrame>(
 		"--motion-frame", argMotionFrame.getValue(),
-		{{"world", MotionFrame::World}, {"scan", MotionFrame::Scan}});
+		{named(MotionFrame::World, motionFrameName), named(MotionFrame::Scan, motionFrameName)});
 	if (options.motionFrame == MotionFrame::Scan && options.truthPoses.empty())
 		throw UsageError(
 			"--motion-frame scan needs the true poses: --truth-poses PREFIX.gt.txt");
