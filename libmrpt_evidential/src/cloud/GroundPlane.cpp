@@ -82,17 +82,22 @@ TGroundPlane refine(
 	const std::vector<mrpt::math::TPoint3Df>& points, const std::vector<int>& columns,
 	const TGroundPlane& plane, double inlierDistance, std::size_t& inliers)
 {
-	double sxx = 0, sxy = 0, syy = 0, sx = 0, sy = 0, n = 0, sxz = 0, syz = 0, sz = 0;
+	// The inliers first, without a branch (whether a candidate is one follows
+	// no pattern); then their sums, a short chain in the points' order.
+	std::vector<int> in(points.size());
+	std::size_t count = 0;
 	for (std::size_t i = 0; i < points.size(); ++i)
 	{
-		// Candidates come in long runs (a layer, or a laser in each firing);
-		// the inliers among them do not: they are added without a branch,
-		// adding zeros leaving the sums as they were.
-		if (columns[i] == kNotGround) continue;
-		const auto& p = points[i];
-		const bool in = std::abs(plane.heightOf(p)) <= inlierDistance;
-		const double x = in ? p.x : 0.0, y = in ? p.y : 0.0, z = in ? p.z : 0.0;
-		sxx += x * x, sxy += x * y, syy += y * y, sx += x, sy += y, n += in ? 1.0 : 0.0;
+		in[count] = static_cast<int>(i);
+		count += (columns[i] != kNotGround) &
+			(std::abs(plane.heightOf(points[i])) <= inlierDistance);
+	}
+	double sxx = 0, sxy = 0, syy = 0, sx = 0, sy = 0, n = 0, sxz = 0, syz = 0, sz = 0;
+	for (std::size_t k = 0; k < count; ++k)
+	{
+		const auto& p = points[static_cast<std::size_t>(in[k])];
+		const double x = p.x, y = p.y, z = p.z;
+		sxx += x * x, sxy += x * y, syy += y * y, sx += x, sy += y, n += 1.0;
 		sxz += x * z, syz += y * z, sz += z;
 	}
 	inliers = static_cast<std::size_t>(n);

@@ -8,6 +8,25 @@
 
 namespace mrpt_evidential
 {
+namespace
+{
+/** The inner neighbours' ground of one column: the lowest slack among them,
+ * and the mean ground of those that have it. Folded in without a branch:
+ * which neighbour has the least slack follows no pattern. */
+struct TInner
+{
+	float ground = 0.0f, slack = CGroundSurface::kMaxStray + 1.0f;
+	int count = 0;
+	void take(float g, float s, bool valid)
+	{
+		const bool less = valid && s < slack, same = valid && s == slack;
+		ground = less ? g : same ? ground + g : ground;
+		count = less ? 1 : same ? count + 1 : count;
+		slack = less ? s : slack;
+	}
+};
+}  // namespace
+
 void CGroundSurface::follow(
 	const std::vector<mrpt::math::TPoint3Df>& points, const std::vector<int>& lowest,
 	const TGroundPlane& plane, double sensorX, double sensorY)
@@ -15,47 +34,63 @@ void CGroundSurface::follow(
 	constexpr int side = kGroundColumns;
 	m_ground.assign(side * side, 0.0f);
 	m_slack.assign(side * side, 0.0f);
+	float* ground = m_ground.data();
+	float* slackOf = m_slack.data();
 	const int sx = groundColumnOf(sensorX), sy = groundColumnOf(sensorY);
-	const auto ringOf = [&](int x, int y) { return std::max(std::abs(x - sx), std::abs(y - sy)); };
-	const auto settle = [&](int c, float inner, float slack) {
+	const auto settle = [&](int c, const TInner& inner) {
 		const int i = lowest.empty() ? -1 : lowest[static_cast<std::size_t>(c)];
 		const float h = i < 0 ? HUGE_VALF
 							  : static_cast<float>(plane.heightOf(points[static_cast<std::size_t>(i)]));
-		const bool ground = std::abs(h - inner) <= slack + kStep;
-		m_ground[c] = ground ? h : inner;
-		m_slack[c] = ground ? 0.0f : std::min(slack + kStep, kMaxStray);
+		const float g = inner.ground / static_cast<float>(inner.count);
+		const bool isGround = std::abs(h - g) <= inner.slack + kStep;
+		ground[c] = isGround ? h : g;
+		slackOf[c] = isGround ? 0.0f : std::min(inner.slack + kStep, kMaxStray);
 	};
-	// The inner neighbours of (x, y) on ring r: the next column towards the
-	// sensor, in the row or the column that crosses ring r there.
-	const auto visit = [&](int x, int y, int r) {
-		if (x < 0 || y < 0 || x >= side || y >= side) return;
-		const int dx = x - sx, dy = y - sy;
-		const int ix = std::abs(dx) == r ? x - (dx > 0 ? 1 : -1) : x;
-		const int iy = std::abs(dy) == r ? y - (dy > 0 ? 1 : -1) : y;
-		// Along the side's own axis the neighbours either side count too,
-		// where they lie within ring r - 1; a corner has the diagonal one.
-		const bool alongX = ix == x, alongY = iy == y;
-		const int spread = alongX || alongY ? 1 : 0;
-		float inner = 0.0f, slack = kMaxStray + 1.0f;
-		int count = 0;
-		const auto take = [&](int nx, int ny) {
-			if (nx < 0 || ny < 0 || nx >= side || ny >= side || ringOf(nx, ny) != r - 1) return;
-			const int n = ny * side + nx;
-			if (m_slack[n] < slack)
-				slack = m_slack[n], inner = m_ground[n], count = 1;
-			else if (m_slack[n] == slack)
-				inner += m_ground[n], ++count;
-		};
-		for (int k = -spread; k <= spread; ++k) take(alongX ? ix + k : ix, alongY ? iy + k : iy);
-		settle(y * side + x, inner / static_cast<float>(count), slack);
+	// One side of ring r: the columns at `fixed` across the side's axis, from
+	// `first` to `last` along it (clipped to the grid); `at(along, across)`
+	// is a column's index. Their inner neighbours lie one step towards the
+	// sensor across the axis (`inward`): the one straight in, and those
+	// either side of it that lie within ring r - 1 (nearer than r to the
+	// sensor's `centre` along the axis); a corner of the ring has only the
+	// diagonal one.
+	const auto ringSide = [&](int fixed, int inward, int centre, int r, int first, int last,
+							  auto at) {
+		if (fixed < 0 || fixed >= side) return;
+		for (int a = std::max(first, 0), end = std::min(last, side - 1); a <= end; ++a)
+		{
+			TInner inner;
+			const int d = a - centre;
+			if (d == -r || d == r)
+			{
+				const int n = at(a - (d > 0 ? 1 : -1), fixed + inward);
+				inner.take(ground[n], slackOf[n], true);
+			}
+			else
+				for (int k = -1; k <= 1; ++k)
+				{
+					const int b = a + k;
+					const bool valid = b >= 0 && b < side && std::abs(b - centre) < r;
+					const int n = at(valid ? b : a, fixed + inward);
+					inner.take(ground[n], slackOf[n], valid);
+				}
+			settle(at(a, fixed), inner);
+		}
 	};
+	const auto alongX = [](int x, int y) { return y * side + x; };
+	const auto alongY = [](int y, int x) { return y * side + x; };
 	// The sensor's column: the plane, give or take a step.
-	settle(sy * side + sx, 0.0f, 0.0f);
+	TInner onPlane;
+	onPlane.take(0.0f, 0.0f, true);
+	settle(sy * side + sx, onPlane);
+	// Ring by ring outwards: the rows below and above the sensor with the
+	// ring's corners, then the columns left and right of it.
 	const int rings = std::max({sx, sy, side - 1 - sx, side - 1 - sy});
 	for (int r = 1; r <= rings; ++r)
 	{
-		for (int x = sx - r; x <= sx + r; ++x) visit(x, sy - r, r), visit(x, sy + r, r);
-		for (int y = sy - r + 1; y <= sy + r - 1; ++y) visit(sx - r, y, r), visit(sx + r, y, r);
+		ringSide(sy - r, 1, sx, r, sx - r, sx + r, alongX);
+		ringSide(sy + r, -1, sx, r, sx - r, sx + r, alongX);
+		ringSide(sx - r, 1, sy, r, sy - r + 1, sy + r - 1, alongY);
+		ringSide(sx + r, -1, sy, r, sy - r + 1, sy + r - 1, alongY);
 	}
 }
 
