@@ -126,6 +126,8 @@ void CPolarToCartesian::setup(
 
 	m_sectorSpans.resize(n);
 	m_nearest.resize(n);
+	m_reach.resize(n);
+	m_freeEnd.resize(n);
 	for (std::size_t s = 0; s < n; ++s)
 		m_nearest[s] = polar.impacts(s).empty() ? HUGE_VAL : polar.impacts(s).front();
 	for (std::size_t s = 0; s < n; ++s)
@@ -143,6 +145,10 @@ void CPolarToCartesian::setup(
 		m_sectorSpans[s] = {
 			reach * reach, polar.freeBins(s) == 0 ? -1.0 : freeEnd * freeEnd,
 			polar.freeMass(s), limit, margin};
+		// The square roots of the squares above, exactly (in base 2 the root
+		// of a rounded square is the number itself).
+		m_reach[s] = reach;
+		m_freeEnd[s] = polar.freeBins(s) == 0 ? 0.0 : freeEnd;
 	}
 	// A sector without evidence holds nothing at every range; one with a
 	// free run, its free mass up to the run's end.
@@ -171,10 +177,8 @@ void CPolarToCartesian::setup(
 	// sector; before the first and after the last centre, and on the half of
 	// a gap beside a sector without evidence, the sector alone.
 	const auto reachOf = [&](std::size_t lo, std::size_t hi) {
-		const SectorSpan &a = m_sectorSpans[lo], &b = m_sectorSpans[hi];
-		return nearestOnly(lo, hi)
-			? TGapRadius(std::sqrt(a.reach2), std::sqrt(b.reach2))
-			: TGapRadius(std::sqrt(std::max(a.reach2, b.reach2)));
+		return nearestOnly(lo, hi) ? TGapRadius(m_reach[lo], m_reach[hi])
+								   : TGapRadius(std::max(m_reach[lo], m_reach[hi]));
 	};
 	outline(m_polygon, &m_box, polar, sensor, m_directions, true, reachOf);
 	// The area the scan informs bounds that of its vacuous bands, which
@@ -227,7 +231,7 @@ void CPolarToCartesian::setup(
 	{
 		const SectorSpan& span = m_sectorSpans[s];
 		m_uniformReach[s] = span.freeEnd2 > 0.0 && polar.freeMass(s) == w
-			? (1.0 - 1e-9) * std::min(std::sqrt(span.freeEnd2), span.freeLimit)
+			? (1.0 - 1e-9) * std::min(m_freeEnd[s], span.freeLimit)
 			: 0.0;
 	}
 	outline(
@@ -354,7 +358,7 @@ CPolarToCartesian::TRows CPolarToCartesian::prepareRows(const GridGeometry& grid
 				if (band.to2 > band.from2) return std::sqrt(far ? band.to2 : band.from2);
 				const SectorSpan &a = m_sectorSpans[lo], &b = m_sectorSpans[hi];
 				const double limit = std::min(a.freeLimit, b.freeLimit);
-				return limit < HUGE_VAL ? limit : std::sqrt(std::max(a.reach2, b.reach2));
+				return limit < HUGE_VAL ? limit : std::max(m_reach[lo], m_reach[hi]);
 			};
 		};
 		// The strips along the centre lines go to the visit: past each

@@ -361,9 +361,10 @@ class CPolarToCartesian
 	/** The area of the region the scan informs, a bound of vacuousArea()
 	 * (m^2, set by setup()). */
 	double m_informedArea = 0.0;
-	/** Each sector's nearest impact, +inf without one, and the range within
-	 * which it bounds the uniform region (setup()'s scratch). */
-	std::vector<double> m_nearest, m_uniformReach;
+	/** Each sector's nearest impact, +inf without one, the range within which
+	 * it bounds the uniform region, and its reach and free run's end (0
+	 * without one) unsquared, for the outlines (setup()'s scratch). */
+	std::vector<double> m_nearest, m_uniformReach, m_reach, m_freeEnd;
 	/** Outlines of the informed and of the uniform regions (x, y pairs), and
 	 * the world directions of their corners. */
 	std::vector<double> m_polygon, m_uniformPolygon, m_directions;
