@@ -82,8 +82,6 @@ struct TCloudInput
 	std::vector<CPose3D> poses;
 };
 
-/** The cloud as a user would flatten it for a 2-D grid: per 0.2-degree
- * bearing, the nearest obstacle point, its ground removed as our map does. */
 /** A cloud's points in the robot's frame (its sensor pose applied). */
 std::vector<mrpt::math::TPoint3Df> worldPoints(const mrpt::obs::CObservationPointCloud& c)
 {
@@ -99,6 +97,8 @@ std::vector<mrpt::math::TPoint3Df> worldPoints(const mrpt::obs::CObservationPoin
 	return points;
 }
 
+/** The cloud as a user would flatten it for a 2-D grid: per 0.2-degree
+ * bearing, the nearest obstacle point, its ground removed as our map does. */
 mrpt::obs::CObservation2DRangeScan flatten(const mrpt::obs::CObservationPointCloud& c)
 {
 	const std::vector<mrpt::math::TPoint3Df> points = worldPoints(c);
