@@ -8,6 +8,8 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+#include <utility>
 
 #include "cloud/CloudSectors.h"
 #include "cloud/GroundPlane.h"
@@ -51,6 +53,28 @@ TEST(Clouds, GroundFreeObstacleOccupiedBehindUnknown)
 		EXPECT_EQ(at(map, 6.05, 2.05), Decision::Occupied);
 		// Behind the wall, nothing was seen.
 		for (const double x : {7.5, 9.0}) EXPECT_EQ(at(map, x, 0.05), Decision::Unknown) << x;
+	}
+}
+
+TEST(Clouds, TerrainHoldsWithTheSensorAtTheEdgeOfItsColumns)
+{
+	// The ground is followed in 1 m columns within 40 m of the robot's
+	// origin; a sensor mounted far from that origin stands at their edge or
+	// beyond, and most points fall outside them (each takes its nearest
+	// column's ground). The same world, seen from the same place, reads the
+	// same.
+	for (const auto& [x, y] : {std::pair{39.6, -39.6}, std::pair{-39.9, 39.9}, std::pair{45.0, 0.0}})
+	{
+		SCOPED_TRACE(std::to_string(x) + ", " + std::to_string(y));
+		auto cloud = test::lidarCloud({0.0, {wallAhead()}});
+		cloud->sensorPose = CPose3D(x, y, cloud->sensorPose.z(), 0, 0, 0);
+		CEvidentialGridMap2D map = makeMap(GroundRemoval::Terrain);
+		ASSERT_TRUE(map.insertObservation(*cloud, CPose3D(-x, -y, 0, 0, 0, 0)));
+		for (const double gx : {3.0, 4.5, -4.0}) EXPECT_EQ(at(map, gx, 0.05), Decision::Free) << gx;
+		EXPECT_EQ(at(map, 0.05, 5.0), Decision::Free);
+		EXPECT_EQ(at(map, 6.05, 0.05), Decision::Occupied);
+		EXPECT_EQ(at(map, 6.05, 2.05), Decision::Occupied);
+		EXPECT_EQ(at(map, 9.0, 0.05), Decision::Unknown);
 	}
 }
 
