@@ -9,8 +9,8 @@
 #include <cmath>
 #include <memory>
 #include <optional>
-#include <utility>
 #include <stdexcept>
+#include <utility>
 
 #include "CInputWalker.h"
 #include "CMotionScorer.h"
