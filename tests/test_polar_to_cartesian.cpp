@@ -79,6 +79,38 @@ double referenceMargin(const CPolarSourceGrid& polar, std::size_t s)
 	return polar.freeMargin() * std::min(3.0, 1.0 / std::cos(*flattest));
 }
 
+/** A precise scan of beams to a ring, the one straight ahead without a
+ * return, and the free mass of each cell it informs in a grid of 0.025 m. */
+struct TSilentRing
+{
+	CPolarSourceGrid polar;
+	CPolarToCartesian transform;
+	EvidentialGridStorage grid;
+	std::map<std::size_t, double> freeMass;
+};
+void setUpSilentRing(
+	TSilentRing& out, std::size_t beams, double aperture, double ring, double xMax,
+	double yHalf)
+{
+	setUpPreciseScan(out.polar, out.transform, beams, aperture, 0.0, [ring](double a) {
+		return std::abs(a) < 1e-6 ? 0.0 : ring;
+	});
+	ASSERT_FALSE(out.polar.sectorObserved(beams / 2));
+	out.grid.reset(-1, xMax, -yHalf, yHalf, 0.025, 1'000'000);
+	out.freeMass = freeMassOfInformedCells(out.transform, out.grid.geometry());
+	ASSERT_GT(out.transform.uniformMass().free, 0.5);
+}
+
+/** Free evidence stops at a sector's nearest impact, less half a bin or the
+ * sector's free margin. */
+double freeLimitOf(const CPolarSourceGrid& polar, std::size_t s)
+{
+	const auto& impacts = polar.impacts(s);
+	if (impacts.empty() || !(impacts.front() < polar.binCount() * polar.binSize()))
+		return HUGE_VAL;
+	return std::max(0.0, impacts.front() - std::max(0.5 * polar.binSize(), referenceMargin(polar, s)));
+}
+
 /** The bilinear mix at a point of the sensor's frame, straight from the
  * definition; vacuous outside the field of view and beyond reach. */
 Mass referenceMix(
@@ -109,6 +141,15 @@ Mass referenceMix(
 	const double wsBefore = ws;
 	if (nearestOnly) ws = ws < 0.5 ? 0.0 : 1.0;
 	const double r = std::hypot(lx, ly);
+	// Where the silent span is narrower than a cell (a bin), the informed
+	// sector holds the whole gap, as far as its free run holds its free mass.
+	if (nearestOnly)
+	{
+		const std::size_t other = polar.informedBins(s0) > 0 ? s0 : s1;
+		const double freeEnd = (static_cast<double>(polar.freeBins(other)) - 0.5) * polar.binSize();
+		const double bridge = std::min({polar.binSize() / spacing, freeEnd, freeLimitOf(polar, other)});
+		if (polar.freeBins(other) > 0 && r < bridge) ws = other == s0 ? 0.0 : 1.0;
+	}
 	const double reach = (static_cast<double>(std::max(
 							  polar.informedBins(s0), polar.informedBins(s1))) + 0.5) *
 		polar.binSize();
@@ -135,15 +176,7 @@ Mass referenceMix(
 		m.unknown += w * p.unknown;
 		touchesImpact |= p.occupied > 0;
 	}
-	// Free evidence stops at the nearer sector's nearest impact, less half a
-	// bin or the sector's free margin.
-	const auto limit = [&](std::size_t s) {
-		const auto& impacts = polar.impacts(s);
-		if (impacts.empty() || !(impacts.front() < nBins * polar.binSize()))
-			return HUGE_VAL;
-		return std::max(0.0, impacts.front() - std::max(0.5 * polar.binSize(), referenceMargin(polar, s)));
-	};
-	if (r >= std::min(limit(s0), limit(s1))) touchesImpact = true;
+	if (r >= std::min(freeLimitOf(polar, s0), freeLimitOf(polar, s1))) touchesImpact = true;
 	// Within a hair of a centre line (the transform's angles are within
 	// 2e-6 rad) the neighbour of almost no weight may be either side's.
 	if (onCentreLine) *onCentreLine = std::min(wsBefore, 1 - wsBefore) < 1e-3;
@@ -406,18 +439,11 @@ TEST(PolarToCartesian, ABeamWithoutAReturnIsMixedWithNothing)
 	// to the middle of the gap, and the silent beam's span stays unknown. A
 	// mix would have given 3.5 degrees 0.7 of the free mass and 1.5 degrees
 	// 0.3 of it.
-	CPolarSourceGrid polar;
-	CPolarToCartesian transform;
-	setUpPreciseScan(polar, transform, 37, M_PI, 0.0, [](double a) {
-		return std::abs(a) < 1e-6 ? 0.0 : 3.0;
-	});
-	ASSERT_FALSE(polar.sectorObserved(18));
-	EvidentialGridStorage grid;
-	grid.reset(-1, 4, -4, 4, 0.025, 1'000'000);
-	const GridGeometry& g = grid.geometry();
-	std::map<std::size_t, double> freeMass = freeMassOfInformedCells(transform, g);
-	const double free = transform.uniformMass().free;
-	ASSERT_GT(free, 0.5);
+	TSilentRing ring;
+	ASSERT_NO_FATAL_FAILURE(setUpSilentRing(ring, 37, M_PI, 3.0, 4.0, 4.0));
+	const GridGeometry& g = ring.grid.geometry();
+	auto& freeMass = ring.freeMass;
+	const double free = ring.transform.uniformMass().free;
 	for (const double range : {1.0, 2.0})
 		for (const double side : {1.0, -1.0})
 		{
@@ -431,7 +457,39 @@ TEST(PolarToCartesian, ABeamWithoutAReturnIsMixedWithNothing)
 			EXPECT_DOUBLE_EQ(freeMass[cellAt(3.5)], free) << "the informed span, whole";
 		}
 	// Nor does the silent span count as crossed (the motion layer's test).
-	EXPECT_FALSE(transform.crossedWithoutFreeEvidence(2.0, 0.02));
+	EXPECT_FALSE(ring.transform.crossedWithoutFreeEvidence(2.0, 0.02));
+}
+
+TEST(PolarToCartesian, ASilentSpanNarrowerThanACellTakesItsNeighbours)
+{
+	// Beams every half degree to a ring 10 m away, the one straight ahead
+	// without a return. Nearer than a bin over the spacing (0.05 m / 0.5
+	// degrees = 5.7 m) the silent span is narrower than a cell: its
+	// neighbours' free mass covers it. Farther, it holds whole cells that no
+	// beam saw, and they stay unknown.
+	// Cell centres on the silent beam's line (y = 0).
+	TSilentRing ring;
+	ASSERT_NO_FATAL_FAILURE(setUpSilentRing(ring, 121, M_PI / 3, 10.0, 11.0, 3.0125));
+	const GridGeometry& g = ring.grid.geometry();
+	auto& freeMass = ring.freeMass;
+	const double free = ring.transform.uniformMass().free;
+	const auto cellAt = [&](double range, double degrees) {
+		const double a = degrees * M_PI / 180;
+		return g.index(g.cellX(range * std::cos(a)), g.cellY(range * std::sin(a)));
+	};
+	for (const double range : {1.0, 3.0, 5.0})
+	{
+		SCOPED_TRACE(testing::Message() << range << " m");
+		ASSERT_EQ(freeMass.count(cellAt(range, 0.0)), 1u) << "the silent line, bridged";
+		EXPECT_DOUBLE_EQ(freeMass[cellAt(range, 0.0)], free);
+	}
+	for (const double range : {6.5, 8.0})
+	{
+		SCOPED_TRACE(testing::Message() << range << " m");
+		EXPECT_EQ(freeMass.count(cellAt(range, 0.0)), 0u) << "the silent line, a cell wide";
+		ASSERT_EQ(freeMass.count(cellAt(range, 0.6)), 1u) << "the informed span";
+		EXPECT_DOUBLE_EQ(freeMass[cellAt(range, 0.6)], free);
+	}
 }
 
 TEST(PolarToCartesian, FreeMarginHoldsAcrossAWallAtAnyIncidence)

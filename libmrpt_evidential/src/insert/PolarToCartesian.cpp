@@ -158,7 +158,7 @@ void CPolarToCartesian::setup(
 	const auto constantFree = [](const SectorSpan& span) {
 		return span.reach2 <= 0.0 ? 0.0 : span.freeMass;
 	};
-	m_gapMixes.assign(n + 1, GapMix{0.0, 0.0, 0.0, VacuousBand{}, false});
+	m_gapMixes.assign(n + 1, GapMix{0.0, 0.0, 0.0, VacuousBand{}, false, 0.0, 0.0});
 	forEachGap(polar, [&](std::size_t lo, std::size_t hi, std::size_t i, double) {
 		GapMix& gap = m_gapMixes[i];
 		gap.vacuous = vacuousBand(lo, hi);
@@ -168,6 +168,9 @@ void CPolarToCartesian::setup(
 		const double limit = std::min(a.freeLimit, b.freeLimit);
 		gap.simpleEnd2 = std::min({constantTo2(a), constantTo2(b), limit * limit});
 		gap.loFree = constantFree(a), gap.hiFree = constantFree(b);
+		const double bridge = bridgeRadius(lo, hi);
+		gap.bridge2 = bridge * bridge;
+		gap.bridgeWeight = a.reach2 <= 0.0 ? 1.0 : 0.0;
 	});
 	// A full turn's gap from the last centre to the first, reached from
 	// either end of the position range.
@@ -175,10 +178,12 @@ void CPolarToCartesian::setup(
 
 	// Between two sector centres the mix reaches as far as the longer
 	// sector; before the first and after the last centre, and on the half of
-	// a gap beside a sector without evidence, the sector alone.
+	// a gap beside a sector without evidence, the sector alone (the silent
+	// half as far as the bridge, which stops short of the other's reach).
 	const auto reachOf = [&](std::size_t lo, std::size_t hi) {
-		return nearestOnly(lo, hi) ? TGapRadius(m_reach[lo], m_reach[hi])
-								   : TGapRadius(std::max(m_reach[lo], m_reach[hi]));
+		if (!nearestOnly(lo, hi)) return TGapRadius(std::max(m_reach[lo], m_reach[hi]));
+		const double bridge = bridgeRadius(lo, hi);
+		return TGapRadius(std::max(m_reach[lo], bridge), std::max(m_reach[hi], bridge));
 	};
 	outline(m_polygon, &m_box, polar, sensor, m_directions, true, reachOf);
 	// The area the scan informs bounds that of its vacuous bands, which
@@ -237,10 +242,24 @@ void CPolarToCartesian::setup(
 	outline(
 		m_uniformPolygon, nullptr, polar, sensor, m_directions, false,
 		[&](std::size_t lo, std::size_t hi) {
-			return nearestOnly(lo, hi)
-				? TGapRadius(m_uniformReach[lo], m_uniformReach[hi])
-				: TGapRadius(std::min(m_uniformReach[lo], m_uniformReach[hi]));
+			if (!nearestOnly(lo, hi))
+				return TGapRadius(std::min(m_uniformReach[lo], m_uniformReach[hi]));
+			// The silent half holds, within the bridge, what the other does
+			// (the hair less as for every sector's reach above).
+			const bool uniform = std::max(m_uniformReach[lo], m_uniformReach[hi]) > 0.0;
+			const double bridged = uniform ? (1.0 - 1e-9) * bridgeRadius(lo, hi) : 0.0;
+			return TGapRadius(
+				std::max(m_uniformReach[lo], bridged), std::max(m_uniformReach[hi], bridged));
 		});
+}
+
+double CPolarToCartesian::bridgeRadius(std::size_t lo, std::size_t hi) const
+{
+	if (!nearestOnly(lo, hi)) return 0.0;
+	const std::size_t other = m_sectorSpans[lo].reach2 > 0.0 ? lo : hi;
+	const SectorSpan& span = m_sectorSpans[other];
+	if (!(span.freeEnd2 > 0.0)) return 0.0;
+	return std::min({m_polar->binSize() * m_invSpacing, m_freeEnd[other], span.freeLimit});
 }
 
 CPolarToCartesian::VacuousBand CPolarToCartesian::vacuousBand(
@@ -306,7 +325,10 @@ bool CPolarToCartesian::crossedWithoutFreeEvidence(double x, double y) const
 	// Beside a sector without evidence, the nearer sector alone.
 	const std::size_t sectors[2] = {ns.lo, ns.hi};
 	const GapMix& gap = m_gapMixes[static_cast<std::size_t>(position + 1.0)];
-	const std::size_t first = gap.nearestOnly && ns.wHi >= 0.5 ? 1 : 0;
+	// Within the bridge, the sector with evidence (as the mix takes it).
+	const std::size_t nearer = range2 < gap.bridge2 ? static_cast<std::size_t>(gap.bridgeWeight)
+												 : (ns.wHi >= 0.5 ? 1 : 0);
+	const std::size_t first = gap.nearestOnly ? nearer : 0;
 	const std::size_t end = gap.nearestOnly ? first + 1 : 2;
 	const double range = std::sqrt(range2), bin = m_polar->binSize();
 	bool crossed = false, withheld = false;

@@ -335,8 +335,14 @@ class CPolarToCartesian
 		/** The gap's vacuous band (vacuousBand()). */
 		VacuousBand vacuous;
 		/** True beside a sector without evidence (a beam without a return):
-		 * each half of the gap then holds its own sector alone, unmixed. */
+		 * each half of the gap then holds its own sector alone, unmixed,
+		 * but within bridge2. */
 		bool nearestOnly;
+		/** Beside a sector without evidence, the squared range below which
+		 * the other sector holds the whole gap (bridgeRadius(); 0 for any
+		 * other gap), and that sector's weight (0 the first, 1 the second). */
+		double bridge2;
+		double bridgeWeight;
 	};
 	/** Indexed by the whole part of a cell's sector position + 1, as
 	 * detail::neighbours() takes it: n + 1 entries. */
@@ -348,6 +354,21 @@ class CPolarToCartesian
 	{
 		return gap.nearestOnly ? (w < 0.5 ? 0.0 : 1.0) : w;
 	}
+	/** The weight of a gap's second sector at squared range `range2` on
+	 * the simple path: nearestWeight(), or inside the bridge of a gap beside
+	 * a sector without evidence the other sector's alone. */
+	static double simpleWeight(const GapMix& gap, double w, double range2)
+	{
+		return range2 < gap.bridge2 ? gap.bridgeWeight : nearestWeight(gap, w);
+	}
+	/** For a gap beside a sector without evidence (nearestOnly()): the
+	 * range within which the other sector holds the silent one's half too.
+	 * Nearer than a bin (the grid's cell) over the sector spacing, the silent
+	 * span is narrower than a cell, which then lies mostly in its
+	 * neighbours' halves; and only as far as the other sector's free run
+	 * holds its free mass, short of its free limit, so that the bridge is a
+	 * simple mix. 0 for any other gap. */
+	double bridgeRadius(std::size_t lo, std::size_t hi) const;
 	/** True for a gap between two sectors (not a half gap at an end) of
 	 * which one has no evidence: GapMix::nearestOnly, from the spans. */
 	bool nearestOnly(std::size_t lo, std::size_t hi) const

@@ -35,7 +35,7 @@ inline bool CPolarToCartesian::mixAt(
 	const GapMix& gap = m_gapMixes[whole];
 	if (range2 < gap.simpleEnd2)
 	{
-		const double w = nearestWeight(gap, shifted - static_cast<double>(whole));
+		const double w = simpleWeight(gap, shifted - static_cast<double>(whole), range2);
 		const double free = (1 - w) * gap.loFree + w * gap.hiFree;
 		observed = Mass::simpleFree(free);
 		return free > 1e-12;
