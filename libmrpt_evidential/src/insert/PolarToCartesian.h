@@ -217,8 +217,11 @@ class CPolarToCartesian
 	struct RowSpans
 	{
 		std::vector<std::size_t> start, cursor;
-		std::vector<int> columns;  //!< pairs: first and last column
-		std::vector<double> crossingX;
+		/** Pairs of first and last column, row k's in [start[k],
+		 * start[k + 1]); fill() leaves the vector as long as it was when
+		 * a scan needed more, so read no further than start.back(). */
+		std::vector<int> columns;
+		std::vector<double> crossingX;  //!< fill()'s work array
 		/** Polygon edges that cross a row: rows [row0, row1) from `first`,
 		 * x at row0 and its change per row. */
 		struct Edge

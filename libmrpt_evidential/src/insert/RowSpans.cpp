@@ -3,6 +3,7 @@
  * columns. */
 
 #include <algorithm>
+#include <functional>
 
 #include "insert/PolarToCartesian.h"
 
@@ -10,17 +11,41 @@ namespace mrpt_evidential
 {
 namespace
 {
-/** Sorts a row's crossings. They arrive in the outline's order, which for an
- * outline around the sensor is nearly sorted, forwards or backwards along
- * the row: reversed when backwards, insertion sorts them in a few steps
- * (std::sort moves them with a library call per element). */
+/** True, with [first, last) sorted, when it was a sorted sequence turned
+ * about one point (the outline's start cut the row's crossings in two):
+ * `before` orders it. */
+template <typename Before>
+bool sortedByTurning(double* first, double* last, Before before)
+{
+	double* cut = std::is_sorted_until(first, last, before);
+	if (cut == last) return true;
+	if (before(*first, *(last - 1)) || !std::is_sorted(cut, last, before)) return false;
+	std::rotate(first, cut, last);
+	return true;
+}
+
+/** Sorts a row's crossings. They arrive in the outline's order: around the
+ * sensor that is the order of their angles, so each row's crossings run
+ * forwards or backwards along it, cut in two where the row meets the
+ * outline's start. Those are put in order in linear time; what is left
+ * (a vacuous band's outline, whose inner arc runs back) is nearly sorted,
+ * which insertion sorts in a few steps (std::sort moves them with a library
+ * call per element). */
 void sortCrossings(double* first, double* last)
 {
 	if (last - first < 2) return;  // an empty row may come as two null pointers
+	if (last - first == 2)  // most rows
+	{
+		if (*first > *(first + 1)) std::swap(*first, *(first + 1));
+		return;
+	}
+	if (sortedByTurning(first, last, std::less<double>())) return;
+	if (sortedByTurning(first, last, std::greater<double>()))
+	{
+		std::reverse(first, last);
+		return;
+	}
 	if (*first > *(last - 1)) std::reverse(first, last);
-	// Most rows of a ragged outline (a cloud's 1,800 sectors) hold many
-	// crossings, already in order.
-	if (std::is_sorted(first, last)) return;
 	if (last - first > 64)
 	{
 		std::sort(first, last);
@@ -79,8 +104,10 @@ MRPT_EVIDENTIAL_CPU_CLONES void CPolarToCartesian::RowSpans::fill(
 		start[k] = offset;
 		offset += covering;
 	}
+	// The work arrays only grow: zeroing their new ends every scan would
+	// cost a write to each (they are read only up to start[nRows]).
 	std::vector<double>& xs = crossingX;
-	xs.resize(start[nRows]);
+	if (xs.size() < start[nRows]) xs.resize(start[nRows]);
 	cursor.assign(start.begin(), start.end() - 1);
 	for (const Edge& e : edges)
 	{
@@ -91,26 +118,28 @@ MRPT_EVIDENTIAL_CPU_CLONES void CPolarToCartesian::RowSpans::fill(
 
 	// Crossings to spans of columns whose centres lie between two of them;
 	// `start` is rewritten to index the spans.
-	columns.clear();
+	// At most a span for each two crossings, written in place.
+	if (columns.size() < start[nRows]) columns.resize(start[nRows]);
+	int* out = columns.data();
 	std::size_t from = 0;
 	for (std::size_t k = 0; k < nRows; ++k)
 	{
 		const std::size_t to = start[k + 1];
 		sortCrossings(xs.data() + from, xs.data() + to);
-		start[k] = columns.size();
+		start[k] = static_cast<std::size_t>(out - columns.data());
 		for (std::size_t c = from; c + 1 < to; c += 2)
 		{
 			const int c0 = detail::clampToInt(
 				std::ceil((xs[c] - grid.xMin) * invRes - 0.5), 0, grid.sizeX);
 			const int c1 = detail::clampToInt(
 				std::floor((xs[c + 1] - grid.xMin) * invRes - 0.5), -1, grid.sizeX - 1);
-			if (c0 > c1) continue;
-			columns.push_back(c0);
-			columns.push_back(c1);
+			out[0] = c0;
+			out[1] = c1;
+			out += c0 <= c1 ? 2 : 0;
 		}
 		from = to;
 	}
-	start[nRows] = columns.size();
+	start[nRows] = static_cast<std::size_t>(out - columns.data());
 }
 
 void CPolarToCartesian::RowSpans::assignDifference(
