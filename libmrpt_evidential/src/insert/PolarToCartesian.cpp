@@ -85,7 +85,7 @@ void CPolarToCartesian::setup(
 	m_polar = &polar;
 	m_sensor = sensor;
 	m_box = Box{};
-	m_informedArea = 0.0;
+	m_informedArea = m_vacuousArea = 0.0;
 	m_polygon.clear();
 	m_uniformPolygon.clear();
 	const std::size_t n = polar.sectorCount();
@@ -129,13 +129,23 @@ void CPolarToCartesian::setup(
 	m_reach.resize(n);
 	m_freeEnd.resize(n);
 	for (std::size_t s = 0; s < n; ++s)
-		m_nearest[s] = polar.impacts(s).empty() ? HUGE_VAL : polar.impacts(s).front();
+	{
+		const TImpactRanges impacts = polar.impacts(s);
+		m_nearest[s] = impacts.empty() ? HUGE_VAL : impacts.front();
+	}
+	// Each sector's spans, and in the same pass what the box and the
+	// uniform region below need of its row: the free masses most sectors
+	// start with (the votes), a cloud's impacts past the polygon.
+	auto& votes = m_freeMassVotes;
+	votes.clear();
 	for (std::size_t s = 0; s < n; ++s)
 	{
-		const double reach = polar.transformBins(s) == 0
-			? 0.0
-			: (static_cast<double>(polar.transformBins(s)) + 0.5) * bin;
-		const double freeEnd = (static_cast<double>(polar.freeBins(s)) - 0.5) * bin;
+		const std::size_t transformBins = polar.transformBins(s),
+						  freeBins = polar.freeBins(s);
+		const double freeMass = polar.freeMass(s);
+		const double reach =
+			transformBins == 0 ? 0.0 : (static_cast<double>(transformBins) + 0.5) * bin;
+		const double freeEnd = (static_cast<double>(freeBins) - 0.5) * bin;
 		const double nearest = m_nearest[s];
 		const double margin =
 			marginAlongBeam(m_nearest, polar.fullTurn(), spacing, polar.freeMargin(), s);
@@ -143,12 +153,31 @@ void CPolarToCartesian::setup(
 			? std::max(0.0, nearest - std::max(0.5 * bin, margin))
 			: HUGE_VAL;
 		m_sectorSpans[s] = {
-			reach * reach, polar.freeBins(s) == 0 ? -1.0 : freeEnd * freeEnd,
-			polar.freeMass(s), limit, margin};
+			reach * reach, freeBins == 0 ? -1.0 : freeEnd * freeEnd, freeMass, limit};
 		// The square roots of the squares above, exactly (in base 2 the root
 		// of a rounded square is the number itself).
 		m_reach[s] = reach;
-		m_freeEnd[s] = polar.freeBins(s) == 0 ? 0.0 : freeEnd;
+		m_freeEnd[s] = freeBins == 0 ? 0.0 : freeEnd;
+
+		if (freeBins > 0)
+		{
+			const auto it = std::find_if(votes.begin(), votes.end(), [freeMass](const auto& v) {
+				return v.first == freeMass;
+			});
+			if (it == votes.end())
+				votes.emplace_back(freeMass, 1);
+			else
+				++it->second;
+		}
+		// A cloud's farther impacts lie beyond the polygon; the grid must
+		// grow to hold them all the same (the box holds the polygon too,
+		// which outline() adds below).
+		if (const std::size_t informed = polar.informedBins(s); informed > transformBins)
+		{
+			const double r = (static_cast<double>(informed) + 0.5) * bin;
+			const auto [c, sn] = sectorDirection(s);
+			m_box.add(sensor.x + r * c, sensor.y + r * sn);
+		}
 	}
 	// A sector without evidence holds nothing at every range; one with a
 	// free run, its free mass up to the run's end.
@@ -158,12 +187,19 @@ void CPolarToCartesian::setup(
 	const auto constantFree = [](const SectorSpan& span) {
 		return span.reach2 <= 0.0 ? 0.0 : span.freeMass;
 	};
+	// Between a sector whose impact is near and one that reaches far (a
+	// pole, a car's edge, a tree before an open street), a gap holds nothing
+	// from the nearer one's free limit to the farther one's impacts: the
+	// area of those bands is added up as they are found.
 	m_gapMixes.assign(n + 1, GapMix{0.0, 0.0, 0.0, VacuousBand{}, false, 0.0, 0.0});
-	forEachGap(polar, [&](std::size_t lo, std::size_t hi, std::size_t i, double) {
+	forEachGap(polar, [&](std::size_t lo, std::size_t hi, std::size_t i, double width) {
 		GapMix& gap = m_gapMixes[i];
 		gap.vacuous = vacuousBand(lo, hi);
-		if (lo == hi) return;  // a half gap: the sector alone, no mix
 		gap.nearestOnly = nearestOnly(lo, hi);
+		// Beside a sector without evidence, the band lies on the other half.
+		m_vacuousArea += (gap.nearestOnly ? 0.25 : 0.5) * width *
+			(gap.vacuous.to2 - gap.vacuous.from2);
+		if (lo == hi) return;  // a half gap: the sector alone, no mix
 		const SectorSpan &a = m_sectorSpans[lo], &b = m_sectorSpans[hi];
 		const double limit = std::min(a.freeLimit, b.freeLimit);
 		gap.simpleEnd2 = std::min({constantTo2(a), constantTo2(b), limit * limit});
@@ -180,45 +216,23 @@ void CPolarToCartesian::setup(
 	// sector; before the first and after the last centre, and on the half of
 	// a gap beside a sector without evidence, the sector alone (the silent
 	// half as far as the bridge, which stops short of the other's reach).
-	const auto reachOf = [&](std::size_t lo, std::size_t hi) {
-		if (!nearestOnly(lo, hi)) return TGapRadius(std::max(m_reach[lo], m_reach[hi]));
-		const double bridge = bridgeRadius(lo, hi);
-		return TGapRadius(std::max(m_reach[lo], bridge), std::max(m_reach[hi], bridge));
+	// The area the scan informs, added up as the outline takes each gap's
+	// radius, bounds that of its vacuous bands, which prepareRows() works
+	// out only when the bound holds enough cells.
+	const auto reachOf = [&](std::size_t lo, std::size_t hi, double width) {
+		TGapRadius r(std::max(m_reach[lo], m_reach[hi]));
+		if (nearestOnly(lo, hi))
+		{
+			const double bridge = bridgeRadius(lo, hi);
+			r = TGapRadius(std::max(m_reach[lo], bridge), std::max(m_reach[hi], bridge));
+		}
+		m_informedArea += 0.25 * width * (r.lo * r.lo + r.hi * r.hi);
+		return r;
 	};
 	outline(m_polygon, &m_box, polar, sensor, m_directions, true, reachOf);
-	// The area the scan informs bounds that of its vacuous bands, which
-	// prepareRows() works out only when the bound holds enough cells.
-	forEachGap(polar, [&](std::size_t lo, std::size_t hi, std::size_t, double width) {
-		const TGapRadius r = reachOf(lo, hi);
-		m_informedArea += 0.25 * width * (r.lo * r.lo + r.hi * r.hi);
-	});
-
-	// A cloud's farther impacts lie beyond the polygon; the grid must grow
-	// to hold them all the same.
-	for (std::size_t s = 0; s < n; ++s)
-		if (polar.informedBins(s) > polar.transformBins(s))
-		{
-			const double r = (static_cast<double>(polar.informedBins(s)) + 0.5) * bin;
-			const auto [c, sn] = sectorDirection(s);
-			m_box.add(sensor.x + r * c, sensor.y + r * sn);
-		}
 
 	// The uniform region: the free mass most sectors start with, where both
 	// sectors around a gap hold it in the two bins around every centre.
-	auto& votes = m_freeMassVotes;
-	votes.clear();
-	for (std::size_t s = 0; s < n; ++s)
-	{
-		if (polar.freeBins(s) == 0) continue;
-		const double w = polar.freeMass(s);
-		auto it = std::find_if(votes.begin(), votes.end(), [w](const auto& v) {
-			return v.first == w;
-		});
-		if (it == votes.end())
-			votes.emplace_back(w, 1);
-		else
-			++it->second;
-	}
 	const auto best = std::max_element(
 		votes.begin(), votes.end(),
 		[](const auto& a, const auto& b) { return a.second < b.second; });
@@ -241,7 +255,7 @@ void CPolarToCartesian::setup(
 	}
 	outline(
 		m_uniformPolygon, nullptr, polar, sensor, m_directions, false,
-		[&](std::size_t lo, std::size_t hi) {
+		[&](std::size_t lo, std::size_t hi, double) {
 			if (!nearestOnly(lo, hi))
 				return TGapRadius(std::min(m_uniformReach[lo], m_uniformReach[hi]));
 			// The silent half holds, within the bridge, what the other does
@@ -291,20 +305,6 @@ CPolarToCartesian::VacuousBand CPolarToCartesian::vacuousBand(
 	return best;
 }
 
-double CPolarToCartesian::vacuousArea() const
-{
-	// Between a sector whose impact is near and one that reaches far (a
-	// pole, a car's edge, a tree before an open street), the gap holds
-	// nothing from the nearer one's free limit to the farther one's impacts.
-	double area = 0.0;
-	forEachGap(*m_polar, [&](std::size_t, std::size_t, std::size_t i, double width) {
-		// Beside a sector without evidence, the band lies on the other half.
-		const GapMix& gap = m_gapMixes[i];
-		area += (gap.nearestOnly ? 0.25 : 0.5) * width * (gap.vacuous.to2 - gap.vacuous.from2);
-	});
-	return area;
-}
-
 bool CPolarToCartesian::crossedWithoutFreeEvidence(double x, double y) const
 {
 	if (!m_polar || m_box.empty()) return false;
@@ -335,7 +335,7 @@ bool CPolarToCartesian::crossedWithoutFreeEvidence(double x, double y) const
 	for (std::size_t k = first; k < end; ++k)
 	{
 		const std::size_t s = sectors[k];
-		const std::vector<double>& impacts = m_polar->impacts(s);
+		const TImpactRanges impacts = m_polar->impacts(s);
 		if (impacts.empty()) return false;
 		// A bin short of the impact the beam has crossed the point: a thing
 		// whose face stood there has moved back by a cell (the cell holding
@@ -365,7 +365,7 @@ CPolarToCartesian::TRows CPolarToCartesian::prepareRows(const GridGeometry& grid
 	m_uniformSpans.fill(m_uniformPolygon, grid, first, last);
 	const double worthArea = kMinVacuousCells * res * res;
 	m_skipsVacuous = m_informedArea >= worthArea &&
-		m_polar->sectorSpacing() > 4 * kCentreLineSlack && vacuousArea() >= worthArea;
+		m_polar->sectorSpacing() > 4 * kCentreLineSlack && m_vacuousArea >= worthArea;
 	if (m_skipsVacuous)
 	{
 		// The bands as the region inside their far ends (an outline that
@@ -375,7 +375,7 @@ CPolarToCartesian::TRows CPolarToCartesian::prepareRows(const GridGeometry& grid
 		// outlines' corners then stay near the bands' near ends, instead of
 		// running to the sensor and crossing every row near it.
 		const auto bandEnd = [this](bool far) {
-			return [this, far](std::size_t lo, std::size_t hi) {
+			return [this, far](std::size_t lo, std::size_t hi, double) {
 				const VacuousBand band = vacuousBand(lo, hi);
 				if (band.to2 > band.from2) return std::sqrt(far ? band.to2 : band.from2);
 				const SectorSpan &a = m_sectorSpans[lo], &b = m_sectorSpans[hi];

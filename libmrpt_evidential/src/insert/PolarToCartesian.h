@@ -309,9 +309,6 @@ class CPolarToCartesian
 		 * evidence stops at the nearer one's limit (past it, where a wall is
 		 * oblique, lies the wall the nearer beam hit). */
 		double freeLimit;
-		/** The free margin along the sector's beam: freeMargin stretched by
-		 * the incidence on the surface its nearest impact lies on. */
-		double margin;
 	};
 	std::vector<SectorSpan> m_sectorSpans;
 	/** The squared ranges [from, to) between two sectors within which every
@@ -379,10 +376,11 @@ class CPolarToCartesian
 		return lo != hi &&
 			(m_sectorSpans[lo].reach2 <= 0.0) != (m_sectorSpans[hi].reach2 <= 0.0);
 	}
-	/** The area of all the gaps' vacuous bands (m^2): when it holds enough
-	 * cells, prepareRows() outlines them and the visit leaves them out. */
-	double vacuousArea() const;
-	/** The area of the region the scan informs, a bound of vacuousArea()
+	/** The area of all the gaps' vacuous bands (m^2, set by setup()): when
+	 * it holds enough cells, prepareRows() outlines them and the visit
+	 * leaves them out. */
+	double m_vacuousArea = 0.0;
+	/** The area of the region the scan informs, a bound of m_vacuousArea
 	 * (m^2, set by setup()). */
 	double m_informedArea = 0.0;
 	/** Each sector's nearest impact, +inf without one, the range within which

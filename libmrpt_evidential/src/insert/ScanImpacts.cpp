@@ -65,7 +65,7 @@ void CScanImpacts::build(
 	TPlaces places;
 	for (std::size_t s = 0; s < polar.sectorCount(); ++s)
 	{
-		const std::vector<double>& ranges = polar.impacts(s);
+		const TImpactRanges ranges = polar.impacts(s);
 		if (ranges.empty() || !(ranges.front() < reach)) continue;
 		const auto [c, sn] = transform.sectorDirection(s);
 		// A sector of many impacts (a cloud's) has them placed in chunks by

@@ -118,25 +118,34 @@ void CPolarSourceGrid::build(
 	constexpr double kNoReturn = std::numeric_limits<double>::infinity();
 	const BeamSectors sectorOf(beamSpacing, aperture, *this);
 	// Ranges read in place: three library calls per beam cost more than the
-	// rest of this loop.
+	// rest of this loop. Two passes: each beam's sector and the sectors'
+	// counts, then the ranges in their sectors' places. A beam that gives no
+	// evidence goes to a sector past the last, which no one reads: the
+	// second pass then takes every beam alike.
 	const float* ranges = nBeams > 0 ? &scan.getScanRange(0) : nullptr;
+	const std::size_t none = m_sectorCount;
+	m_beams.resize(nBeams);
 	for (std::size_t i = 0; i < nBeams; ++i)
 	{
-		// Beam 0 is at the smallest angle when the scan turns
-		// counterclockwise, at the largest otherwise.
-		const std::size_t sector =
-			sectorOf(scan.rightToLeft ? i : nBeams - 1 - i);
 		const double r = ranges[i];
 		const bool valid = scan.getScanRangeValidity(i) && std::isfinite(r) &&
 			r > 0.0;
-		if (valid)
-			m_impacts[sector].push_back(r);
-		else if (options.invalidRangesAsFree)
-			m_impacts[sector].push_back(kNoReturn);
-		else
-			continue;
+		// Beam 0 is at the smallest angle when the scan turns
+		// counterclockwise, at the largest otherwise.
+		const std::size_t sector = valid || options.invalidRangesAsFree
+			? sectorOf(scan.rightToLeft ? i : nBeams - 1 - i)
+			: none;
+		m_beams[i] = {sector, valid ? r : kNoReturn};
+		++m_impactStart[sector + 1];
 		m_observed[sector] = 1;
 	}
+	placeSectors();
+	// m_impactStart[s] is sector s's next free place until it is set back.
+	for (const TBeam& beam : m_beams) m_impactRanges[m_impactStart[beam.sector]++] = beam.range;
+	// Each sector's next free place is now where the next sector starts.
+	std::copy_backward(
+		m_impactStart.begin(), m_impactStart.end() - 1, m_impactStart.end());
+	m_impactStart[0] = 0;
 
 	buildRows(options, false);
 }
@@ -166,10 +175,15 @@ void CPolarSourceGrid::build(const TCloudReturns& returns, const TSourceGridOpti
 				throw std::invalid_argument(
 					"cloud returns: impact range " + std::to_string(r) + " in sector " +
 					std::to_string(s));
-		m_impacts[s] = returns.impacts[s];
+		m_impactStart[s + 1] = returns.impacts[s].size();
 		m_freeReach[s] = reach;
-		m_observed[s] = !m_impacts[s].empty() || reach > 0.0;
+		m_observed[s] = !returns.impacts[s].empty() || reach > 0.0;
 	}
+	placeSectors();
+	for (std::size_t s = 0; s < n; ++s)
+		std::copy(
+			returns.impacts[s].begin(), returns.impacts[s].end(),
+			m_impactRanges.begin() + static_cast<std::ptrdiff_t>(m_impactStart[s]));
 	buildRows(options, true);
 }
 
@@ -179,10 +193,16 @@ void CPolarSourceGrid::startSectors(const TSourceGridOptions& options)
 	m_freeMargin = options.freeMargin;
 	m_binCount =
 		static_cast<std::size_t>(std::ceil(options.maxRange / options.binSize));
-	m_impacts.resize(m_sectorCount);
-	for (auto& impacts : m_impacts) impacts.clear();
+	// One more sector than the grid's: build()'s beams without evidence.
+	m_impactStart.assign(m_sectorCount + 2, 0);
 	m_freeReach.assign(m_sectorCount, 0.0);
-	m_observed.assign(m_sectorCount, 0);
+	m_observed.assign(m_sectorCount + 1, 0);
+}
+
+void CPolarSourceGrid::placeSectors()
+{
+	for (std::size_t s = 1; s < m_impactStart.size(); ++s) m_impactStart[s] += m_impactStart[s - 1];
+	m_impactRanges.resize(m_impactStart.back());
 }
 
 void CPolarSourceGrid::buildRows(const TSourceGridOptions& options, bool nearestRunOnly)
@@ -190,17 +210,19 @@ void CPolarSourceGrid::buildRows(const TSourceGridOptions& options, bool nearest
 	m_layouts.resize(m_sectorCount);
 	m_transformBins.resize(m_sectorCount);
 	m_runs.clear();
-	m_masses.clear();
+	m_binMasses.clear();
+	m_binsHoldIgnorance = detail::binsHoldIgnorance(options.sensorModel.model);
 	m_maxInformedBins = m_maxTransformBins = 0;
 	for (std::size_t s = 0; s < m_sectorCount; ++s)
 	{
-		std::vector<double>& impacts = m_impacts[s];
-		std::sort(impacts.begin(), impacts.end());
+		double* first = m_impactRanges.data() + m_impactStart[s];
+		const std::size_t count = m_impactStart[s + 1] - m_impactStart[s];
+		std::sort(first, first + count);
 		TSectorLayout& layout = m_layouts[s];
 		layout = detail::appendSectorRow(
-			options.sensorModel, impacts.data(), impacts.size(), m_binSize,
-			m_binCount, m_runs, m_masses, !nearestRunOnly);
-		if (impacts.empty() && m_freeReach[s] > 0.0)
+			options.sensorModel, first, count, m_binSize, m_binCount, m_runs, m_binMasses,
+			!nearestRunOnly);
+		if (count == 0 && m_freeReach[s] > 0.0)
 		{
 			// Only ground returns: the space they crossed.
 			layout.freeBins = binOfRange(m_freeReach[s]);

@@ -19,13 +19,14 @@ inline std::size_t binOf(double r, double binSize, std::size_t nBins)
 /** Writes the row of a sector whose arguments are already checked and whose
  * impact ranges are sorted in increasing order: its leading free bins as a
  * count and one mass, and the bins past them that may hold evidence as runs
- * appended to `runs` (offsets into `masses`, where their masses are
- * appended). Bins outside the runs are vacuous. The free bins hold muF
- * reinforced once per impact (the beams that crossed them); without
+ * appended to `runs` (offsets into `binMasses`, where one number per bin is
+ * appended: binMass() turns it into the bin's mass). Bins outside the runs
+ * are vacuous. The free bins hold muF reinforced once per impact (the beams
+ * that crossed them); without
  * `freeMassToo` the layout's free mass is left at 0 for the caller to set
  * (CPolarSourceGrid gives a cloud's turn one free mass). */
 TSectorLayout appendSectorRow(
 	const SensorModelParams& params, const double* sortedRanges,
 	std::size_t nImpacts, double binSize, std::size_t nBins,
-	std::vector<TBinRun>& runs, std::vector<Mass>& masses, bool freeMassToo = true);
+	std::vector<TBinRun>& runs, std::vector<double>& binMasses, bool freeMassToo = true);
 }  // namespace mrpt_evidential::detail

@@ -143,11 +143,10 @@ double profileWeight(
 }
 
 /** appendSectorRow() for a sector of one impact (a 2-D scan's beam): the same
- * masses, written once each, without the search for runs to join and the
- * second pass that turns the product of ignorances into m(O). */
+ * masses, written once each, without the search for runs to join. */
 TSectorLayout oneImpactRow(
 	const SensorModelParams& params, bool spread, double r, double binSize,
-	std::size_t nBins, std::vector<TBinRun>& runs, std::vector<Mass>& masses,
+	std::size_t nBins, std::vector<TBinRun>& runs, std::vector<double>& binMasses,
 	bool freeMassToo)
 {
 	TSectorLayout layout;
@@ -160,21 +159,17 @@ TSectorLayout oneImpactRow(
 
 	const std::size_t end = std::min(band.last + 1, nBins);
 	TBinRun& run = runs.emplace_back();
-	run.begin = band.first, run.end = end, run.offset = masses.size();
+	run.begin = band.first, run.end = end, run.offset = binMasses.size();
 	layout.runCount = 1;
 	layout.informedBins = end;
 	if (params.model == SensorModel::MultiEcho)
 	{
-		masses.push_back(Mass::simpleOccupied(params.muO));
-		masses.resize(masses.size() + (end - band.first - 1), Mass::vacuous());
+		binMasses.push_back(params.muO);
+		binMasses.resize(binMasses.size() + (end - band.first - 1), 0.0);
 		return layout;
 	}
 	for (std::size_t b = band.first; b < end; ++b)
-	{
-		Mass& m = masses.emplace_back();
-		m.unknown = 1.0 - params.muO * profileWeight(params, r, band.own, b, binSize);
-		m.occupied = 1.0 - m.unknown;
-	}
+		binMasses.push_back(1.0 - params.muO * profileWeight(params, r, band.own, b, binSize));
 	return layout;
 }
 
@@ -185,7 +180,7 @@ namespace detail
 TSectorLayout appendSectorRow(
 	const SensorModelParams& params, const double* sortedRanges,
 	std::size_t nImpacts, double binSize, std::size_t nBins,
-	std::vector<TBinRun>& runs, std::vector<Mass>& masses, bool freeMassToo)
+	std::vector<TBinRun>& runs, std::vector<double>& binMasses, bool freeMassToo)
 {
 	TSectorLayout layout;
 	layout.firstRun = runs.size();
@@ -194,12 +189,16 @@ TSectorLayout appendSectorRow(
 	// A 2-D scan's sector holds one beam's impact.
 	if (nImpacts == 1)
 		return oneImpactRow(
-			params, spread, sortedRanges[0], binSize, nBins, runs, masses, freeMassToo);
+			params, spread, sortedRanges[0], binSize, nBins, runs, binMasses, freeMassToo);
 
 	// Sorted impacts give bands sorted by their first bin. Runs hold the
 	// bands; bands a few bins apart share a run (its vacuous bins cost less
-	// than one more run to look through).
+	// than one more run to look through). Reinforcement: the occupied mass
+	// of a bin is 1 - prod(1 - muO g_i) over the impacts whose band holds
+	// it; its m(Omega) is the product (1 for none).
 	constexpr std::size_t kJoinGap = 8;
+	const bool reinforces = detail::binsHoldIgnorance(params.model);
+	const double none = reinforces ? 1.0 : 0.0;
 	std::size_t firstOccupied = nBins;
 	// A sector of many impacts (a cloud's) has their bands worked out in
 	// chunks by the vector code; a few are not worth the call.
@@ -220,34 +219,27 @@ TSectorLayout appendSectorRow(
 			band.first <= runs.back().end + kJoinGap)
 		{
 			TBinRun& run = runs.back();
-			for (; run.end < end; ++run.end) masses.push_back(Mass::vacuous());
+			for (; run.end < end; ++run.end) binMasses.push_back(none);
 		}
 		else
 		{
 			// Field by field: a run built whole on the stack was read back in
 			// one 16-byte load from two 8-byte stores, a stall per sector.
 			TBinRun& run = runs.emplace_back();
-			run.begin = band.first, run.end = end, run.offset = masses.size();
-			for (std::size_t b = band.first; b < end; ++b)
-				masses.push_back(Mass::vacuous());
+			run.begin = band.first, run.end = end, run.offset = binMasses.size();
+			binMasses.resize(binMasses.size() + (end - band.first), none);
 		}
-		Mass* row = masses.data() + runs.back().offset - runs.back().begin;
-		if (params.model == SensorModel::MultiEcho)
+		double* row = binMasses.data() + runs.back().offset - runs.back().begin;
+		if (!reinforces)
 		{
-			row[band.first] = Mass::simpleOccupied(params.muO);
+			row[band.first] = params.muO;
 			continue;
 		}
-		// Reinforcement: the occupied mass of a bin is 1 - prod(1 - muO g_i)
-		// over the impacts whose band holds it; accumulate the product in
-		// m(Omega) and turn it into m(O) below.
 		for (std::size_t b = band.first; b < end; ++b)
-			row[b].unknown *= 1.0 -
+			row[b] *= 1.0 -
 				params.muO * profileWeight(params, sortedRanges[i], band.own, b, binSize);
 	}
 	layout.runCount = runs.size() - layout.firstRun;
-	if (layout.runCount > 0 && params.model != SensorModel::MultiEcho)
-		for (std::size_t i = runs[layout.firstRun].offset; i < masses.size(); ++i)
-			masses[i].occupied = 1.0 - masses[i].unknown;
 
 	layout.freeBins = firstOccupied;
 	// Every beam crossed the bins before the nearest band.
@@ -269,16 +261,16 @@ std::vector<Mass> sectorMasses(
 	std::vector<double> sorted = impactRanges;
 	std::sort(sorted.begin(), sorted.end());
 	std::vector<TBinRun> runs;
-	std::vector<Mass> masses;
+	std::vector<double> binMasses;
 	const TSectorLayout layout = detail::appendSectorRow(
-		params, sorted.data(), sorted.size(), binSize, nBins, runs, masses);
+		params, sorted.data(), sorted.size(), binSize, nBins, runs, binMasses);
 	std::vector<Mass> row(nBins, Mass::vacuous());
 	std::fill(row.begin(), row.begin() + static_cast<std::ptrdiff_t>(layout.freeBins),
 			  Mass::simpleFree(layout.freeMass));
+	const bool ignorance = detail::binsHoldIgnorance(params.model);
 	for (const TBinRun& run : runs)
-		std::copy_n(
-			masses.begin() + static_cast<std::ptrdiff_t>(run.offset),
-			run.end - run.begin, row.begin() + static_cast<std::ptrdiff_t>(run.begin));
+		for (std::size_t b = run.begin; b < run.end; ++b)
+			row[b] = detail::binMass(binMasses[run.offset + (b - run.begin)], ignorance);
 	return row;
 }
 

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 namespace mrpt::obs
@@ -73,6 +74,26 @@ struct TCloudReturns
 	}
 };
 
+/** The impact ranges of one sector of a CPolarSourceGrid, sorted: a view
+ * into the grid's storage, valid until the grid is built again. */
+class TImpactRanges
+{
+   public:
+	TImpactRanges(const double* first, const double* last) : m_first(first), m_last(last) {}
+	const double* begin() const { return m_first; }
+	const double* end() const { return m_last; }
+	const double* data() const { return m_first; }
+	std::size_t size() const { return static_cast<std::size_t>(m_last - m_first); }
+	bool empty() const { return m_first == m_last; }
+	/** The nearest impact; the view must not be empty. */
+	double front() const { return *m_first; }
+	double operator[](std::size_t i) const { return m_first[i]; }
+
+   private:
+	const double* m_first;
+	const double* m_last;
+};
+
 /** The polar SourceGrid of one 2-D scan or 3-D cloud, in the sensor's
  * frame.
  *
@@ -130,7 +151,11 @@ class CPolarSourceGrid
 	/** True when at least one beam of the sector gave evidence (a valid return,
 	 * or an invalid one read as free). A sector that is not observed is
 	 * vacuous. */
-	bool sectorObserved(std::size_t s) const { return m_observed.at(s) != 0; }
+	bool sectorObserved(std::size_t s) const
+	{
+		if (s >= m_sectorCount) throw std::out_of_range("no such sector");
+		return m_observed[s] != 0;
+	}
 
 	/** Number of leading bins of sector s that may hold evidence; every bin
 	 * from it on is vacuous. */
@@ -142,7 +167,12 @@ class CPolarSourceGrid
 	double freeMass(std::size_t s) const { return m_layouts.at(s).freeMass; }
 	/** The ranges of sector s's impacts, sorted (+inf for a beam without
 	 * return read as free). */
-	const std::vector<double>& impacts(std::size_t s) const { return m_impacts.at(s); }
+	TImpactRanges impacts(std::size_t s) const
+	{
+		if (s >= m_sectorCount) throw std::out_of_range("no such sector");
+		return {m_impactRanges.data() + m_impactStart[s],
+				m_impactRanges.data() + m_impactStart[s + 1]};
+	}
 	/** Index of the bin holding range r (binCount() beyond the last). */
 	std::size_t binOfRange(double r) const;
 	/** TSourceGridOptions::freeMargin of the latest build. */
@@ -172,7 +202,9 @@ class CPolarSourceGrid
 		for (const TBinRun* end = run + row.runCount; run != end; ++run)
 		{
 			if (bin < run->begin) break;
-			if (bin < run->end) return m_masses[run->offset + (bin - run->begin)];
+			if (bin < run->end)
+				return detail::binMass(
+					m_binMasses[run->offset + (bin - run->begin)], m_binsHoldIgnorance);
 		}
 		return Mass::vacuous();
 	}
@@ -181,7 +213,11 @@ class CPolarSourceGrid
 	/** Sets the bins, margin and per-sector storage for m_sectorCount
 	 * sectors. */
 	void startSectors(const TSourceGridOptions& options);
-	/** Writes every sector's row from m_impacts and m_freeReach;
+	/** Turns m_impactStart from the count of each sector's impacts (entry
+	 * s + 1 for sector s) into where they start in m_impactRanges, which it
+	 * sizes to hold them all. */
+	void placeSectors();
+	/** Writes every sector's row from its impacts and m_freeReach;
 	 * `nearestRunOnly`: the transform covers each row up to the end of its
 	 * first run (clouds). */
 	void buildRows(const TSourceGridOptions& options, bool nearestRunOnly);
@@ -191,11 +227,28 @@ class CPolarSourceGrid
 	bool m_fullTurn = false;
 	std::vector<TSectorLayout> m_layouts;  //!< one per sector
 	std::vector<TBinRun> m_runs;
-	std::vector<Mass> m_masses;  //!< the runs' masses
-	std::vector<char> m_observed;
+	/** The runs' bins, one number each (detail::binMass()): a quarter of the
+	 * memory of whole masses, which the transform's mixed cells read. */
+	std::vector<double> m_binMasses;
+	bool m_binsHoldIgnorance = true;
+	std::vector<char> m_observed;  //!< per sector, and build()'s one more
 	std::size_t m_maxInformedBins = 0, m_maxTransformBins = 0;
 	std::vector<std::size_t> m_transformBins;  //!< per sector
-	std::vector<std::vector<double>> m_impacts;  //!< per sector, reused
+	/** Every sector's impact ranges, sector after sector: sector s's are
+	 * [m_impactStart[s], m_impactStart[s + 1]). One array, so that the
+	 * transform's walks over the sectors read them in order. */
+	std::vector<double> m_impactRanges;
+	/** sectorCount() + 2 entries: after the last sector's end, that of the
+	 * beams without evidence (build()'s). */
+	std::vector<std::size_t> m_impactStart;
+	/** A beam's sector (sectorCount() for a beam without evidence) and
+	 * impact range, +inf for no return read as free (build()'s scratch). */
+	struct TBeam
+	{
+		std::size_t sector;
+		double range;
+	};
+	std::vector<TBeam> m_beams;
 	std::vector<double> m_freeReach;  //!< per sector, 0 for scans
 };
 

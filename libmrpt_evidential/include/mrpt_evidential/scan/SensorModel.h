@@ -57,8 +57,28 @@ struct SensorModelParams
 	void validate() const;
 };
 
-/** A run of range bins [begin, end) of a sector row kept sparse, whose masses
- * are stored from `offset` on in a list of masses. */
+namespace detail
+{
+/** A run's bin holds occupied evidence only: m(O) and the rest on Omega,
+ * stored as one number, the one the sensor model works out. The reinforcing
+ * models multiply ignorances, so their bins keep m(Omega); MultiEcho's keep
+ * m(O). The other is 1 minus it, as the model itself takes it. */
+constexpr bool binsHoldIgnorance(SensorModel model)
+{
+	return model != SensorModel::MultiEcho;
+}
+/** The mass of a run's bin from its stored number (binsHoldIgnorance()). */
+constexpr Mass binMass(double stored, bool ignorance)
+{
+	// Both parts worked out and then picked, so that the transform's mixed
+	// cells select instead of branching.
+	const double rest = 1.0 - stored;
+	return {0.0, 0.0, ignorance ? rest : stored, ignorance ? stored : rest};
+}
+}  // namespace detail
+
+/** A run of range bins [begin, end) of a sector row kept sparse, whose
+ * masses are stored from `offset` on, one number per bin (detail::binMass()). */
 struct TBinRun
 {
 	std::size_t begin = 0, end = 0, offset = 0;
