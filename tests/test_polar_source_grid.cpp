@@ -5,6 +5,7 @@
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt_evidential/scan/CPolarSourceGrid.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -238,6 +239,68 @@ TEST(PolarSourceGrid, SparseRowsMatchTheFullRowsScanAfterScan)
 		}
 		EXPECT_GE(grid.informedBins(0), informed) << trial;
 		EXPECT_LE(grid.freeBins(0), grid.informedBins(0)) << trial;
+	}
+}
+
+TEST(PolarSourceGrid, EachSectorHoldsItsOwnBeamsSorted)
+{
+	// Scans of 181 and then fewer beams into one grid (its storage reused),
+	// half and full turns, both turning directions, sectors of several
+	// beams, beams without a return: each sector's impacts are the ranges of
+	// the beams nearest its centre that give evidence, sorted, and nothing
+	// else.
+	std::mt19937 rng(11);
+	std::uniform_real_distribution<double> unit(0.0, 1.0);
+	CPolarSourceGrid grid;
+	for (int trial = 0; trial < 40; ++trial)
+	{
+		TSourceGridOptions o = options();
+		o.sectorWidth = (1 + trial % 7) * M_PI / 180;
+		o.invalidRangesAsFree = trial % 3 == 0;
+		const std::size_t n = 181 - static_cast<std::size_t>(trial);
+		const double aperture = trial % 2 ? 2 * M_PI : M_PI;
+		std::vector<float> ranges;
+		std::vector<bool> validity;
+		for (std::size_t i = 0; i < n; ++i)
+		{
+			// Distinct ranges, so that each impact names its beam.
+			ranges.push_back(static_cast<float>(1.0 + 0.03 * static_cast<double>(i)));
+			validity.push_back(unit(rng) > 0.25);
+		}
+		const CObservation2DRangeScan scan = test::scanFromRanges(
+			ranges, validity,
+			test::ScanSetup().aperture(aperture).rightToLeft(trial % 4 < 2));
+		grid.build(scan, o);
+		SCOPED_TRACE(testing::Message() << "trial " << trial);
+
+		std::vector<double> expected, found;
+		for (std::size_t i = 0; i < n; ++i)
+			if (validity[i])
+				expected.push_back(ranges[i]);
+			else if (o.invalidRangesAsFree)
+				expected.push_back(std::numeric_limits<double>::infinity());
+		for (std::size_t s = 0; s < grid.sectorCount(); ++s)
+		{
+			const TImpactRanges impacts = grid.impacts(s);
+			EXPECT_TRUE(std::is_sorted(impacts.begin(), impacts.end())) << s;
+			EXPECT_EQ(grid.sectorObserved(s), !impacts.empty()) << s;
+			for (const double r : impacts)
+			{
+				found.push_back(r);
+				if (!std::isfinite(r)) continue;
+				// The beam of that range lies within half a sector of the
+				// sector's centre (a full turn's last beam joins sector 0).
+				const auto beam = static_cast<std::size_t>(std::lround((r - 1.0) / 0.03));
+				const double off = std::remainder(
+					test::beamAngle(scan, beam) - grid.sectorAngle(s), 2 * M_PI);
+				EXPECT_LE(std::abs(off), 0.5 * grid.sectorSpacing() + 1e-6) << s;
+			}
+		}
+		std::sort(expected.begin(), expected.end());
+		std::sort(found.begin(), found.end());
+		EXPECT_EQ(found, expected);
+		EXPECT_THROW(grid.impacts(grid.sectorCount()), std::out_of_range);
+		EXPECT_THROW(grid.sectorObserved(grid.sectorCount()), std::out_of_range);
 	}
 }
 
