@@ -55,8 +55,7 @@ struct TGapRadius
 
 /** Builds the outline of a region made of one radius per gap between sector
  * centres (and per half sector at the ends of a scan that is not a full
- * turn): radiusOf(lo, hi, width) for the gap between sectors lo and hi
- * (width: its angle; each gap is asked once, in order), a
+ * turn): radiusOf(lo, hi) for the gap between sectors lo and hi, a
  * TGapRadius (a gap whose halves differ splits at its middle, turned by
  * kCentreLineSlack into the longer half for an outline inside the region,
  * into the shorter one for an outline that holds it). Arcs become
@@ -140,7 +139,7 @@ void outline(
 	// A scan that is not a full turn starts and ends at the sensor.
 	if (!polar.fullTurn()) addPoint(sensor.x, sensor.y);
 	forEachGap(polar, [&](std::size_t lo, std::size_t hi, std::size_t i, double width) {
-		const TGapRadius radius = radiusOf(lo, hi, width);
+		const TGapRadius radius = radiusOf(lo, hi);
 		if (radius.lo == radius.hi)
 		{
 			addArc(radius.lo, flankOf(lo, hi), i, i + 1, width);

@@ -85,7 +85,7 @@ void CPolarToCartesian::setup(
 	m_polar = &polar;
 	m_sensor = sensor;
 	m_box = Box{};
-	m_informedArea = m_vacuousArea = 0.0;
+	m_vacuousArea = 0.0;
 	m_polygon.clear();
 	m_uniformPolygon.clear();
 	const std::size_t n = polar.sectorCount();
@@ -216,20 +216,13 @@ void CPolarToCartesian::setup(
 	// sector; before the first and after the last centre, and on the half of
 	// a gap beside a sector without evidence, the sector alone (the silent
 	// half as far as the bridge, which stops short of the other's reach).
-	// The area the scan informs, added up as the outline takes each gap's
-	// radius, bounds that of its vacuous bands, which prepareRows() works
-	// out only when the bound holds enough cells.
-	const auto reachOf = [&](std::size_t lo, std::size_t hi, double width) {
-		TGapRadius r(std::max(m_reach[lo], m_reach[hi]));
-		if (nearestOnly(lo, hi))
-		{
+	outline(
+		m_polygon, &m_box, polar, sensor, m_directions, true,
+		[&](std::size_t lo, std::size_t hi) {
+			if (!nearestOnly(lo, hi)) return TGapRadius(std::max(m_reach[lo], m_reach[hi]));
 			const double bridge = bridgeRadius(lo, hi);
-			r = TGapRadius(std::max(m_reach[lo], bridge), std::max(m_reach[hi], bridge));
-		}
-		m_informedArea += 0.25 * width * (r.lo * r.lo + r.hi * r.hi);
-		return r;
-	};
-	outline(m_polygon, &m_box, polar, sensor, m_directions, true, reachOf);
+			return TGapRadius(std::max(m_reach[lo], bridge), std::max(m_reach[hi], bridge));
+		});
 
 	// The uniform region: the free mass most sectors start with, where both
 	// sectors around a gap hold it in the two bins around every centre.
@@ -255,7 +248,7 @@ void CPolarToCartesian::setup(
 	}
 	outline(
 		m_uniformPolygon, nullptr, polar, sensor, m_directions, false,
-		[&](std::size_t lo, std::size_t hi, double) {
+		[&](std::size_t lo, std::size_t hi) {
 			if (!nearestOnly(lo, hi))
 				return TGapRadius(std::min(m_uniformReach[lo], m_uniformReach[hi]));
 			// The silent half holds, within the bridge, what the other does
@@ -364,7 +357,7 @@ CPolarToCartesian::TRows CPolarToCartesian::prepareRows(const GridGeometry& grid
 	m_spans.fill(m_polygon, grid, first, last);
 	m_uniformSpans.fill(m_uniformPolygon, grid, first, last);
 	const double worthArea = kMinVacuousCells * res * res;
-	m_skipsVacuous = m_informedArea >= worthArea &&
+	m_skipsVacuous =
 		m_polar->sectorSpacing() > 4 * kCentreLineSlack && m_vacuousArea >= worthArea;
 	if (m_skipsVacuous)
 	{
@@ -375,7 +368,7 @@ CPolarToCartesian::TRows CPolarToCartesian::prepareRows(const GridGeometry& grid
 		// outlines' corners then stay near the bands' near ends, instead of
 		// running to the sensor and crossing every row near it.
 		const auto bandEnd = [this](bool far) {
-			return [this, far](std::size_t lo, std::size_t hi, double) {
+			return [this, far](std::size_t lo, std::size_t hi) {
 				const VacuousBand band = vacuousBand(lo, hi);
 				if (band.to2 > band.from2) return std::sqrt(far ? band.to2 : band.from2);
 				const SectorSpan &a = m_sectorSpans[lo], &b = m_sectorSpans[hi];

@@ -380,9 +380,6 @@ class CPolarToCartesian
 	 * it holds enough cells, prepareRows() outlines them and the visit
 	 * leaves them out. */
 	double m_vacuousArea = 0.0;
-	/** The area of the region the scan informs, a bound of m_vacuousArea
-	 * (m^2, set by setup()). */
-	double m_informedArea = 0.0;
 	/** Each sector's nearest impact, +inf without one, the range within which
 	 * it bounds the uniform region, and its reach and free run's end (0
 	 * without one) unsquared, for the outlines (setup()'s scratch). */
