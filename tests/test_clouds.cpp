@@ -169,8 +169,9 @@ TEST(Clouds, PointsNotFiniteLeaveTheGroundPlaneAlone)
 	}
 	TGroundFit fit;
 	fit.sensorZ = 1.8;
-	std::vector<int> columns, lowest;
-	const auto clean = fitGroundPlane(points, fit, columns, lowest);
+	std::vector<std::uint8_t> candidate;
+	std::vector<int> lowest;
+	const auto clean = fitGroundPlane(points, fit, candidate, lowest);
 	ASSERT_TRUE(clean);
 	EXPECT_NEAR(clean->a, std::tan(5.0 * kDeg), 1e-3);
 	// Low enough to pass for ground but for their infinite or NaN
@@ -183,7 +184,7 @@ TEST(Clouds, PointsNotFiniteLeaveTheGroundPlaneAlone)
 	// Whatever the plane's signs, one of these is at a NaN height.
 	points.emplace_back(inf, inf, 0.0f);
 	points.emplace_back(inf, -inf, 0.0f);
-	const auto dirty = fitGroundPlane(points, fit, columns, lowest);
+	const auto dirty = fitGroundPlane(points, fit, candidate, lowest);
 	ASSERT_TRUE(dirty);
 	EXPECT_EQ(dirty->a, clean->a);
 	EXPECT_EQ(dirty->b, clean->b);

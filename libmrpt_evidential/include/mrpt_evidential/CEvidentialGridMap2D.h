@@ -393,8 +393,9 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 		const mrpt::poses::CPose3D& robotPose);
 	/** Fuses a 3-D observation's cloud; false for a type that has none. */
 	bool insertCloud(const mrpt::obs::CObservation& obs, const mrpt::poses::CPose3D& robotPose);
-	/** The points of a 3-D observation in the robot's frame, and its sensor
-	 * pose on the robot; nothing for a type that holds no cloud. */
+	/** The points of a 3-D observation in the robot's frame, written over
+	 * `points`, and its sensor pose on the robot; nothing (and `points` left
+	 * as it was) for a type that holds no cloud. */
 	std::optional<mrpt::poses::CPose3D> cloudInRobotFrame(
 		const mrpt::obs::CObservation& obs, std::vector<mrpt::math::TPoint3Df>& points) const;
 	/** Fuses the workspace's polar grid, built for an observation of time

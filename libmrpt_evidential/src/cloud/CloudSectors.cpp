@@ -5,6 +5,7 @@
 #include <mrpt_evidential/support/CpuClones.h>
 #include <mrpt_evidential/support/FastArcTangent.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <stdexcept>
@@ -17,7 +18,7 @@ namespace mrpt_evidential
 {
 namespace
 {
-/** A point's code (TCloudScratch::codes): its sector, with kGround for a
+/** A point's code (classify()): its sector, with kGround for a
  * ground point, or one of the two marks. */
 constexpr std::uint32_t kDropped = 0xFFFFFFFFu, kAboveRobot = 0xFFFFFFFEu,
 						kGround = 0x80000000u;
@@ -114,7 +115,7 @@ TCloudCounts sortCloudIntoSectors(
 		fit.sensorZ = sensor.z;
 		// Else the robot's base plane (z = 0).
 		TGroundPlane base;
-		if (const auto plane = fitGroundPlane(points, fit, scratch.columns, scratch.lowest))
+		if (const auto plane = fitGroundPlane(points, fit, scratch.candidate, scratch.lowest))
 		{
 			k.a = static_cast<float>(plane->a), k.b = static_cast<float>(plane->b);
 			k.c = static_cast<float>(plane->c), counts.planeFound = true;
@@ -139,32 +140,38 @@ TCloudCounts sortCloudIntoSectors(
 
 	static_assert(sizeof(mrpt::math::TPoint3Df) == 3 * sizeof(float), "packed points");
 	const std::size_t n = points.size();
-	scratch.codes.resize(n);
-	scratch.ranges.resize(n);
-	if (terrain)
-		classify<true>(n ? &points[0].x : nullptr, n, k, scratch.codes.data(), scratch.ranges.data());
-	else
-		classify<false>(n ? &points[0].x : nullptr, n, k, scratch.codes.data(), scratch.ranges.data());
-
 	const bool groundIsFree = rules.groundReturns == GroundReturns::FreeSpace;
-	for (std::size_t i = 0; i < n; ++i)
+	// Block by block: the codes and ranges of a block, worked out in a loop
+	// that vectorizes, are scattered into the sectors while they are still
+	// in the level-1 cache.
+	std::uint32_t codes[kPointBlock];
+	double ranges[kPointBlock];
+	for (std::size_t first = 0; first < n; first += kPointBlock)
 	{
-		const std::uint32_t code = scratch.codes[i];
-		const double range = scratch.ranges[i];
-		if (code == kDropped)
-			++counts.dropped;
-		else if (code == kAboveRobot)
-			++counts.aboveRobot;
-		else if (code & kGround)
-		{
-			++counts.ground;
-			double& reach = out.freeReach[code & ~kGround];
-			if (groundIsFree) reach = std::max(reach, range);
-		}
+		const std::size_t m = std::min(kPointBlock, n - first);
+		if (terrain)
+			classify<true>(&points[first].x, m, k, codes, ranges);
 		else
+			classify<false>(&points[first].x, m, k, codes, ranges);
+		for (std::size_t j = 0; j < m; ++j)
 		{
-			++counts.obstacles;
-			out.impacts[code].push_back(range);
+			const std::uint32_t code = codes[j];
+			const double range = ranges[j];
+			if (code == kDropped)
+				++counts.dropped;
+			else if (code == kAboveRobot)
+				++counts.aboveRobot;
+			else if (code & kGround)
+			{
+				++counts.ground;
+				double& reach = out.freeReach[code & ~kGround];
+				if (groundIsFree) reach = std::max(reach, range);
+			}
+			else
+			{
+				++counts.obstacles;
+				out.impacts[code].push_back(range);
+			}
 		}
 	}
 	counts.used = n - counts.dropped;

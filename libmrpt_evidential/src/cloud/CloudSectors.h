@@ -55,14 +55,14 @@ constexpr double kNoReturnDistance = 0.01;
  * gigabytes of empty sectors). */
 constexpr std::size_t kMaxCloudSectors = 360'000;
 
-/** Per-point storage of sortCloudIntoSectors(), kept between clouds so that
- * it is not allocated for each. */
+/** Storage of sortCloudIntoSectors(), kept between clouds so that it is not
+ * allocated for each. */
 struct TCloudScratch
 {
-	std::vector<std::uint32_t> codes;
-	std::vector<double> ranges;
-	/** The ground plane's fit's (fitGroundPlane()). */
-	std::vector<int> columns, lowest;
+	/** The ground plane's fit's (fitGroundPlane()): which points may be
+	 * ground, each column's lowest of them. */
+	std::vector<std::uint8_t> candidate;
+	std::vector<int> lowest;
 	/** The ground followed over the terrain (GroundRemoval::Terrain). */
 	CGroundSurface surface;
 };

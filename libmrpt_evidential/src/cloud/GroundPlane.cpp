@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
 #include <random>
 
 namespace mrpt_evidential
@@ -75,30 +76,52 @@ std::optional<TGroundPlane> planeThrough(
 	return plane;
 }
 
-/** Least squares of z = a x + b y + c over the candidates (columns[i] !=
- * kNotGround) within inlierDistance of `plane`; the plane itself when they
- * do not fix one. */
+/** Where ground can lie: below the sensor by the mounting heights, give or
+ * take the steepest slope's rise at a point's distance. */
+struct TGroundBand
+{
+	double slope, top, bottom;
+	/** Whether a point at (x, y, z) may be ground: finite (float coordinates
+	 * cannot overflow r2) and within the heights; NaN fails every test.
+	 * Without a branch, so that the loop that asks it vectorizes. */
+	bool admits(double x, double y, double z) const
+	{
+		// Not std::hypot: its care for overflow cost most of the fit.
+		const double r2 = x * x + y * y;
+		const double rise = slope * std::sqrt(r2);
+		return (z <= top + rise) & (z >= bottom - rise) & (r2 <= DBL_MAX);
+	}
+};
+
+/** Least squares of z = a x + b y + c over the candidates (candidate[i]
+ * set) within inlierDistance of `plane`; the plane itself when they do not
+ * fix one. */
 TGroundPlane refine(
-	const std::vector<mrpt::math::TPoint3Df>& points, const std::vector<int>& columns,
+	const std::vector<mrpt::math::TPoint3Df>& points, const std::uint8_t* candidate,
 	const TGroundPlane& plane, double inlierDistance, std::size_t& inliers)
 {
-	// The inliers first, without a branch (whether a candidate is one follows
-	// no pattern); then their sums, a short chain in the points' order.
-	std::vector<int> in(points.size());
-	std::size_t count = 0;
-	for (std::size_t i = 0; i < points.size(); ++i)
-	{
-		in[count] = static_cast<int>(i);
-		count += (columns[i] != kNotGround) &
-			(std::abs(plane.heightOf(points[i])) <= inlierDistance);
-	}
 	double sxx = 0, sxy = 0, syy = 0, sx = 0, sy = 0, n = 0, sxz = 0, syz = 0, sz = 0;
-	for (std::size_t k = 0; k < count; ++k)
+	// Block by block, the inliers first, without a branch (whether a point
+	// is one follows no pattern); then their sums, one chain in the points'
+	// order, while the block is still in the level-1 cache.
+	int in[kPointBlock];
+	for (std::size_t first = 0; first < points.size(); first += kPointBlock)
 	{
-		const auto& p = points[static_cast<std::size_t>(in[k])];
-		const double x = p.x, y = p.y, z = p.z;
-		sxx += x * x, sxy += x * y, syy += y * y, sx += x, sy += y, n += 1.0;
-		sxz += x * z, syz += y * z, sz += z;
+		const std::size_t m = std::min(kPointBlock, points.size() - first);
+		const mrpt::math::TPoint3Df* block = &points[first];
+		std::size_t count = 0;
+		for (std::size_t j = 0; j < m; ++j)
+		{
+			in[count] = static_cast<int>(j);
+			count += candidate[first + j] & (std::abs(plane.heightOf(block[j])) <= inlierDistance);
+		}
+		for (std::size_t k = 0; k < count; ++k)
+		{
+			const auto& p = block[in[k]];
+			const double x = p.x, y = p.y, z = p.z;
+			sxx += x * x, sxy += x * y, syy += y * y, sx += x, sy += y, n += 1.0;
+			sxz += x * z, syz += y * z, sz += z;
+		}
 	}
 	inliers = static_cast<std::size_t>(n);
 	// Cramer's rule on the normal equations.
@@ -116,58 +139,68 @@ TGroundPlane refine(
 }
 
 /** Each point's column (x + side * y), kOutsideColumns for a candidate
- * outside them, or kNotGround for a point that cannot be ground: not finite,
- * or too high or too low for its distance. One loop without branches: it
- * vectorizes. */
-void columnsOf(
-	const float* xyz, std::size_t n, double slope, double top, double bottom, int* columns)
+ * outside them, or kNotGround for a point that band.admits() not, and
+ * whether it is a candidate; returns the candidates' count. One loop
+ * without branches: it vectorizes. */
+std::size_t columnsOf(
+	const float* xyz, std::size_t n, const TGroundBand& band, int* columns,
+	std::uint8_t* candidates)
 {
 	constexpr double side = 2 * kColumnReach / kColumn;
+	std::size_t count = 0;
 	for (std::size_t i = 0; i < n; ++i)
 	{
 		const double x = xyz[3 * i], y = xyz[3 * i + 1], z = xyz[3 * i + 2];
-		// Not std::hypot: its care for overflow cost most of the fit.
-		const double r2 = x * x + y * y;
-		const double rise = slope * std::sqrt(r2);
-		// Finite (float coordinates cannot overflow r2), and within the
-		// heights; NaN fails every test.
-		const bool candidate = (z <= top + rise) & (z >= bottom - rise) & (r2 <= DBL_MAX);
+		const bool candidate = band.admits(x, y, z);
 		const double fx = (x + kColumnReach) / kColumn, fy = (y + kColumnReach) / kColumn;
 		const bool inside = (fx >= 0) & (fy >= 0) & (fx < side) & (fy < side);
 		// The offsets being >= 0, truncation is the floor.
 		const int column = static_cast<int>(inside ? fx : 0.0) +
 			static_cast<int>(side) * static_cast<int>(inside ? fy : 0.0);
 		columns[i] = !candidate ? kNotGround : inside ? column : kOutsideColumns;
+		candidates[i] = candidate;
+		count += candidate;
 	}
+	return count;
 }
 }  // namespace
 
 MRPT_EVIDENTIAL_CPU_CLONES std::optional<TGroundPlane> fitGroundPlane(
 	const std::vector<mrpt::math::TPoint3Df>& points, const TGroundFit& fit,
-	std::vector<int>& columns, std::vector<int>& lowest)
+	std::vector<std::uint8_t>& candidate, std::vector<int>& lowest)
 {
-	lowest.clear();
-	// Ground can only be low: below the sensor by the mounting heights, give
-	// or take the steepest slope's rise.
-	const double slope = std::tan(fit.maxSlope);
-	const double top = fit.sensorZ - fit.minSensorHeight, bottom = fit.sensorZ - fit.maxSensorHeight;
+	TGroundBand band;
+	band.slope = std::tan(fit.maxSlope);
+	band.top = fit.sensorZ - fit.minSensorHeight;
+	band.bottom = fit.sensorZ - fit.maxSensorHeight;
+	const double top = band.top, bottom = band.bottom;
 	static_assert(sizeof(mrpt::math::TPoint3Df) == 3 * sizeof(float), "packed points");
-	columns.resize(points.size());
-	columnsOf(points.empty() ? nullptr : &points[0].x, points.size(), slope, top, bottom, columns.data());
-	const auto candidates = static_cast<std::size_t>(
-		points.size() - std::count(columns.begin(), columns.end(), kNotGround));
-	if (candidates < std::max<std::size_t>(fit.minInliers, 3)) return std::nullopt;
-
 	constexpr auto side = static_cast<std::size_t>(2 * kColumnReach / kColumn);
 	// Each column's lowest height beside its point: no lookup through the
-	// points.
+	// points. A block's columns are found in one loop that vectorizes and
+	// read back in one that cannot while they, and the block's points, are
+	// still in the level-1 cache: the cloud is read once.
 	lowest.assign(side * side, -1);
 	std::vector<float> lowestZ(side * side, HUGE_VALF);
-	for (std::size_t i = 0; i < points.size(); ++i)
+	std::size_t candidates = 0;
+	int columns[kPointBlock];
+	candidate.resize(points.size());
+	for (std::size_t first = 0; first < points.size(); first += kPointBlock)
 	{
-		if (columns[i] < 0) continue;
-		const auto c = static_cast<std::size_t>(columns[i]);
-		if (points[i].z < lowestZ[c]) lowestZ[c] = points[i].z, lowest[c] = static_cast<int>(i);
+		const std::size_t m = std::min(kPointBlock, points.size() - first);
+		candidates += columnsOf(&points[first].x, m, band, columns, &candidate[first]);
+		for (std::size_t j = 0; j < m; ++j)
+		{
+			if (columns[j] < 0) continue;
+			const auto c = static_cast<std::size_t>(columns[j]);
+			const float z = points[first + j].z;
+			if (z < lowestZ[c]) lowestZ[c] = z, lowest[c] = static_cast<int>(first + j);
+		}
+	}
+	if (candidates < std::max<std::size_t>(fit.minInliers, 3))
+	{
+		lowest.clear();
+		return std::nullopt;
 	}
 	TSample sample;
 	for (const int i : lowest)
@@ -190,7 +223,8 @@ MRPT_EVIDENTIAL_CPU_CLONES std::optional<TGroundPlane> fitGroundPlane(
 	}
 	if (!best) return std::nullopt;
 	std::size_t inliers = 0;
-	const TGroundPlane refined = refine(points, columns, *best, fit.inlierDistance, inliers);
+	const TGroundPlane refined =
+		refine(points, candidate.data(), *best, fit.inlierDistance, inliers);
 	const double share = static_cast<double>(inliers) / static_cast<double>(candidates);
 	if (inliers < fit.minInliers || share < fit.minInlierShare) return std::nullopt;
 	// The refined plane must still obey the rules; else keep RANSAC's.

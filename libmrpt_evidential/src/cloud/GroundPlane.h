@@ -5,6 +5,8 @@
 #include <mrpt/math/TPoint3D.h>
 
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -50,17 +52,24 @@ struct TGroundFit
  * inliers among all candidates), or
  * nothing when no plane meets `fit`'s rules. Of two planes with as many
  * inliers the first found wins; the ground of a lidar scan holds most of
- * its points below the sensor, so a car's roof rarely competes. `points` are in the robot's
- * frame; the search is deterministic (fixed seed). Points that are not
- * finite are never ground. `columns` is storage for one int a point, kept
- * by the caller so that it is not allocated for each cloud; `lowest` gets
- * the index of each column's lowest candidate (kGroundColumns^2 of them,
- * row by row from (-kGroundReach, -kGroundReach), -1 for none; empty when
- * there are too few candidates for a plane). Never throws but
- * std::bad_alloc. */
+ * its points below the sensor, so a car's roof rarely competes. `points` are
+ * in the robot's frame; the search is deterministic (fixed seed). Points
+ * that are not finite are never ground. `candidate` and `lowest` are kept by
+ * the caller, so that they are not allocated for each cloud: `candidate`
+ * gets one byte a point, 1 if it may be ground (low enough for its
+ * distance); `lowest` the index of each column's lowest candidate
+ * (kGroundColumns^2 of them, row by row from (-kGroundReach, -kGroundReach),
+ * -1 for none; empty when there are too few candidates for a plane). Never
+ * throws but std::bad_alloc. */
 std::optional<TGroundPlane> fitGroundPlane(
 	const std::vector<mrpt::math::TPoint3Df>& points, const TGroundFit& fit,
-	std::vector<int>& columns, std::vector<int>& lowest);
+	std::vector<std::uint8_t>& candidate, std::vector<int>& lowest);
+
+/** The points a loop over a cloud takes at a time, when a second loop reads
+ * what the first wrote per point: a block's values (a few kilobytes) are
+ * then still in the level-1 cache, where a whole cloud's (hundreds of
+ * kilobytes) would go through memory twice. */
+constexpr std::size_t kPointBlock = 512;
 
 /** The columns of fitGroundPlane() and CGroundSurface: 1 m square, within
  * kGroundReach metres of the robot's origin along x and y. */

@@ -23,10 +23,12 @@ using namespace mrpt_evidential;
 
 namespace
 {
-/** Appends the n points (xs[i], ys[i], zs[i]) of a cloud given in the
- * sensor's frame, in the robot's. Written in place, not appended one by one:
- * the loop then vectorizes. */
-MRPT_EVIDENTIAL_CPU_CLONES void appendInRobotFrame(
+/** Writes the n points (xs[i], ys[i], zs[i]) of a cloud given in the
+ * sensor's frame into `out`, in the robot's. In place, not appended one by
+ * one: the loop then vectorizes. `out` is resized, not cleared first: a
+ * cloud of the size of the one before (a lidar's usual case) is written over
+ * without a pass that sets it to zeros. */
+MRPT_EVIDENTIAL_CPU_CLONES void inRobotFrame(
 	const mrpt::poses::CPose3D& sensorPose, std::size_t n, const float* xs, const float* ys,
 	const float* zs, std::vector<mrpt::math::TPoint3Df>& out)
 {
@@ -35,10 +37,9 @@ MRPT_EVIDENTIAL_CPU_CLONES void appendInRobotFrame(
 	const double r00 = R(0, 0), r01 = R(0, 1), r02 = R(0, 2), r10 = R(1, 0), r11 = R(1, 1),
 				 r12 = R(1, 2), r20 = R(2, 0), r21 = R(2, 1), r22 = R(2, 2);
 	const double tx = sensorPose.x(), ty = sensorPose.y(), tz = sensorPose.z();
+	out.resize(n);
 	if (n == 0) return;
-	const std::size_t first = out.size();
-	out.resize(first + n);
-	float* to = &out[first].x;
+	float* to = &out[0].x;
 	static_assert(sizeof(mrpt::math::TPoint3Df) == 3 * sizeof(float), "packed points");
 	for (std::size_t i = 0; i < n; ++i)
 	{
@@ -58,7 +59,7 @@ void pointsOf(
 	const mrpt::poses::CPose3D& sensorPose, std::vector<mrpt::math::TPoint3Df>& out)
 {
 	const std::size_t n = std::min({xs.size(), ys.size(), zs.size()});
-	appendInRobotFrame(sensorPose, n, xs.data(), ys.data(), zs.data(), out);
+	inRobotFrame(sensorPose, n, xs.data(), ys.data(), zs.data(), out);
 }
 
 void pointsOf(
@@ -74,10 +75,14 @@ void pointsOf(
 std::optional<mrpt::poses::CPose3D> CEvidentialGridMap2D::cloudInRobotFrame(
 	const mrpt::obs::CObservation& obs, std::vector<mrpt::math::TPoint3Df>& points) const
 {
-	points.clear();
+	// Each kind's points written over the last cloud's (pointsOf()); none
+	// when the observation holds none.
 	if (const auto* o = dynamic_cast<const mrpt::obs::CObservationPointCloud*>(&obs))
 	{
-		if (o->pointcloud) pointsOf(*o->pointcloud, o->sensorPose, points);
+		if (o->pointcloud)
+			pointsOf(*o->pointcloud, o->sensorPose, points);
+		else
+			points.clear();
 		return o->sensorPose;
 	}
 	if (const auto* o = dynamic_cast<const mrpt::obs::CObservationVelodyneScan*>(&obs))
@@ -110,6 +115,8 @@ std::optional<mrpt::poses::CPose3D> CEvidentialGridMap2D::cloudInRobotFrame(
 		}
 		else if (o->hasPoints3D)
 			pointsOf(o->points3D_x, o->points3D_y, o->points3D_z, o->sensorPose, points);
+		else
+			points.clear();
 		return o->sensorPose;
 	}
 	return std::nullopt;
