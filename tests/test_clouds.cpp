@@ -14,6 +14,7 @@
 #include "cloud/CloudSectors.h"
 #include "cloud/GroundPlane.h"
 #include "support/clouds.h"
+#include "support/map_bytes.h"
 
 using namespace mrpt_evidential;
 using mrpt::math::TPoint3Df;
@@ -280,6 +281,42 @@ TEST(Clouds, EmptyCloudsInsertNothing)
 	noCloud->pointcloud.reset();
 	EXPECT_TRUE(map.insertObservation(*noCloud, CPose3D()));
 	EXPECT_EQ(map.countDecisions().free + map.countDecisions().occupied, 0u);
+}
+
+TEST(Clouds, CloudsOfAnySizeInTurnReadAsIntoANewMap)
+{
+	// The map keeps its storage for points from cloud to cloud: a cloud of
+	// fewer points than the one before, then one of none, must read as they
+	// do in a copy of the map made from its bytes, which has none of the
+	// last cloud's.
+	const auto many = test::lidarCloud({0.0, {wallAhead()}});
+	const auto left = test::lidarCloud({0.0, {{-3.0, 3.0, 4.0, 4.3, 0.0, 2.5}}});
+	std::vector<TPoint3Df> someOfLeft;
+	for (std::size_t i = 0; i < left->pointcloud->size(); i += 7)
+	{
+		float x, y, z;
+		left->pointcloud->getPoint(i, x, y, z);
+		someOfLeft.emplace_back(x, y, z);
+	}
+	ASSERT_LT(someOfLeft.size(), many->pointcloud->size());
+	const auto fewer = test::cloudOf(someOfLeft, left->sensorPose);
+	auto none = test::cloudOf({});
+	none->pointcloud.reset();
+
+	CEvidentialGridMap2D reused = makeMap(GroundRemoval::Terrain);
+	reused.insertObservation(*many, CPose3D());
+	CEvidentialGridMap2D copy = makeMap();
+	test::deserialize(test::serialize(reused), copy);
+	const std::size_t occupiedBefore = copy.countDecisions().occupied;
+	const CPose3D moved(0.3, -0.2, 0.0, 0.1, 0.0, 0.0);
+	for (const auto* cloud : {fewer.get(), none.get()})
+	{
+		reused.insertObservation(*cloud, moved);
+		copy.insertObservation(*cloud, moved);
+		EXPECT_TRUE(test::serialize(reused) == test::serialize(copy));
+	}
+	// The fewer points did add their wall.
+	EXPECT_GT(copy.countDecisions().occupied, occupiedBefore + 20);
 }
 
 TEST(Clouds, SensorUpsideDownSeesTheSameWorld)
