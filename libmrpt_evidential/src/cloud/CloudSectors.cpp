@@ -146,9 +146,7 @@ TCloudCounts sortCloudIntoSectors(
 	// in the level-1 cache.
 	std::uint32_t codes[kPointBlock];
 	double ranges[kPointBlock];
-	for (std::size_t first = 0; first < n; first += kPointBlock)
-	{
-		const std::size_t m = std::min(kPointBlock, n - first);
+	forEachPointBlock(n, [&](std::size_t first, std::size_t m) {
 		if (terrain)
 			classify<true>(&points[first].x, m, k, codes, ranges);
 		else
@@ -173,7 +171,7 @@ TCloudCounts sortCloudIntoSectors(
 				out.impacts[code].push_back(range);
 			}
 		}
-	}
+	});
 	counts.used = n - counts.dropped;
 	return counts;
 }

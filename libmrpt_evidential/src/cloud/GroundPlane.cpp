@@ -105,9 +105,7 @@ TGroundPlane refine(
 	// is one follows no pattern); then their sums, one chain in the points'
 	// order, while the block is still in the level-1 cache.
 	int in[kPointBlock];
-	for (std::size_t first = 0; first < points.size(); first += kPointBlock)
-	{
-		const std::size_t m = std::min(kPointBlock, points.size() - first);
+	forEachPointBlock(points.size(), [&](std::size_t first, std::size_t m) {
 		const mrpt::math::TPoint3Df* block = &points[first];
 		std::size_t count = 0;
 		for (std::size_t j = 0; j < m; ++j)
@@ -122,7 +120,7 @@ TGroundPlane refine(
 			sxx += x * x, sxy += x * y, syy += y * y, sx += x, sy += y, n += 1.0;
 			sxz += x * z, syz += y * z, sz += z;
 		}
-	}
+	});
 	inliers = static_cast<std::size_t>(n);
 	// Cramer's rule on the normal equations.
 	const double det = sxx * (syy * n - sy * sy) - sxy * (sxy * n - sy * sx) +
@@ -173,7 +171,6 @@ MRPT_EVIDENTIAL_CPU_CLONES std::optional<TGroundPlane> fitGroundPlane(
 	band.slope = std::tan(fit.maxSlope);
 	band.top = fit.sensorZ - fit.minSensorHeight;
 	band.bottom = fit.sensorZ - fit.maxSensorHeight;
-	const double top = band.top, bottom = band.bottom;
 	static_assert(sizeof(mrpt::math::TPoint3Df) == 3 * sizeof(float), "packed points");
 	constexpr auto side = static_cast<std::size_t>(2 * kColumnReach / kColumn);
 	// Each column's lowest height beside its point: no lookup through the
@@ -185,9 +182,7 @@ MRPT_EVIDENTIAL_CPU_CLONES std::optional<TGroundPlane> fitGroundPlane(
 	std::size_t candidates = 0;
 	int columns[kPointBlock];
 	candidate.resize(points.size());
-	for (std::size_t first = 0; first < points.size(); first += kPointBlock)
-	{
-		const std::size_t m = std::min(kPointBlock, points.size() - first);
+	forEachPointBlock(points.size(), [&](std::size_t first, std::size_t m) {
 		candidates += columnsOf(&points[first].x, m, band, columns, &candidate[first]);
 		for (std::size_t j = 0; j < m; ++j)
 		{
@@ -196,7 +191,7 @@ MRPT_EVIDENTIAL_CPU_CLONES std::optional<TGroundPlane> fitGroundPlane(
 			const float z = points[first + j].z;
 			if (z < lowestZ[c]) lowestZ[c] = z, lowest[c] = static_cast<int>(first + j);
 		}
-	}
+	});
 	if (candidates < std::max<std::size_t>(fit.minInliers, 3))
 	{
 		lowest.clear();
@@ -215,7 +210,7 @@ MRPT_EVIDENTIAL_CPU_CLONES std::optional<TGroundPlane> fitGroundPlane(
 	{
 		const auto plane = planeThrough(
 			sample[pick(rng)], sample[pick(rng)], sample[pick(rng)], fit.maxSlope);
-		if (!plane || !(plane->c <= top && plane->c >= bottom)) continue;
+		if (!plane || !(plane->c <= band.top && plane->c >= band.bottom)) continue;
 		const std::size_t count = sample.inliersOf(*plane, fit.inlierDistance);
 		if (count <= bestCount) continue;
 		bestCount = count, best = plane;
@@ -229,7 +224,7 @@ MRPT_EVIDENTIAL_CPU_CLONES std::optional<TGroundPlane> fitGroundPlane(
 	if (inliers < fit.minInliers || share < fit.minInlierShare) return std::nullopt;
 	// The refined plane must still obey the rules; else keep RANSAC's.
 	const double tilt = std::atan(std::hypot(refined.a, refined.b));
-	if (!(tilt <= fit.maxSlope && refined.c <= top && refined.c >= bottom)) return best;
+	if (!(tilt <= fit.maxSlope && refined.c <= band.top && refined.c >= band.bottom)) return best;
 	return refined;
 }
 

@@ -4,6 +4,7 @@
 
 #include <mrpt/math/TPoint3D.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -70,6 +71,15 @@ std::optional<TGroundPlane> fitGroundPlane(
  * then still in the level-1 cache, where a whole cloud's (hundreds of
  * kilobytes) would go through memory twice. */
 constexpr std::size_t kPointBlock = 512;
+
+/** Calls f(first, count) for a cloud of n points block by block: points
+ * [first, first + count), count at most kPointBlock. */
+template <typename F>
+void forEachPointBlock(std::size_t n, F&& f)
+{
+	for (std::size_t first = 0; first < n; first += kPointBlock)
+		f(first, std::min(kPointBlock, n - first));
+}
 
 /** The columns of fitGroundPlane() and CGroundSurface: 1 m square, within
  * kGroundReach metres of the robot's origin along x and y. */
