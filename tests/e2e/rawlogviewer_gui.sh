@@ -75,12 +75,14 @@ start_xvfb "$scratch" 2400x1300x24
 started+=("$XVFB_PID")
 echo "display $DISPLAY"
 
-# window_id TITLE SECONDS: the id of the window with exactly this title,
-# polled until the deadline.
+# window_id TITLE SECONDS: the id of the shown window with exactly this
+# title, polled until the deadline. A program may title a window before it
+# maps it, and size it again when it does: an unmapped window is not yet
+# worth placing.
 window_id() {
 	local pattern deadline=$((SECONDS + $2)) id
 	pattern="^$(sed 's/[][\\.^$*+?(){}|]/\\&/g' <<<"$1")\$"
-	until id=$(xdotool search --name "$pattern" 2>/dev/null | head -n 1) && [ -n "$id" ]; do
+	until id=$(xdotool search --onlyvisible --name "$pattern" 2>/dev/null | head -n 1) && [ -n "$id" ]; do
 		[ $SECONDS -lt $deadline ] || return 1
 		sleep 0.5
 	done
@@ -182,13 +184,17 @@ shoot() {
 	done
 }
 
-# shoot_until_good ID PNG SECONDS: screenshots the window until its pixels
-# pass, and keeps the last screenshot as PNG.
+# shoot_until_good ID PNG SECONDS X Y W H: screenshots the window until its
+# pixels pass, and keeps the last screenshot as PNG. A program may size its
+# window again after it was placed (SceneViewer3D did once, on a busy
+# machine, shrinking the map below the minimum counts): before each
+# screenshot the window is put back at X Y W H.
 shoot_until_good() {
 	local id=$1 png=$2 deadline=$((SECONDS + $3)) report=''
 	while :; do
+		[ "$(geometry "$id")" = "$6x$7+$4+$5" ] || place "$id" "$4" "$5" "$6" "$7"
 		shoot "$id" "$png" && report=$(check_colours "$png") && break
-		[ $SECONDS -lt $deadline ] || { echo "$report" >&2; fail "$(basename "$png"): the expected colours did not show up within $3 s"; }
+		[ $SECONDS -lt $deadline ] || { echo "$report" >&2; fail "$(basename "$png"): the expected colours did not show up within $3 s (the window: $(geometry "$id"), the picture: $("$IDENTIFY" -format %wx%h "$png"))"; }
 		sleep 1
 	done
 	echo "$report"
@@ -287,7 +293,7 @@ until preview=$(window_id "$PREVIEW" 3); do
 done
 place "$preview" 1280 0 1100 850
 shoot "$dialog" "$scratch/rawmap_dialog.png" || fail "cannot screenshot the Raw-map dialog"
-shoot_until_good "$preview" "$scratch/rawmap_preview.png" 60
+shoot_until_good "$preview" "$scratch/rawmap_preview.png" 60 1280 0 1100 850
 end_viewer
 
 # 2. The main window on the rawlog holding the map.
@@ -338,6 +344,5 @@ echo "== SceneViewer3D on $(basename "$scene")"
 start_viewer "$scratch/sceneviewer.log" "$scene_viewer" "$scene"
 id=$(window_id "$SCENE_VIEWER [$(basename "$scene")]" 90) ||
 	{ show_log "$scratch/sceneviewer.log"; fail "SceneViewer3D's window never showed up"; }
-place "$id" 0 0 1000 800
-SHADED=1 shoot_until_good "$id" "$scratch/sceneviewer.png" 60
+SHADED=1 shoot_until_good "$id" "$scratch/sceneviewer.png" 60 0 0 1000 800
 end_viewer
