@@ -137,8 +137,8 @@ TGroundPlane refine(
 }
 
 /** Each point's column (x + side * y), kOutsideColumns for a candidate
- * outside them, or kNotGround for a point that band.admits() not, and
- * whether it is a candidate; returns the candidates' count. One loop
+ * outside them, or kNotGround for a point band.admits() rejects; and in
+ * `candidates` whether each point is one. Returns their count. One loop
  * without branches: it vectorizes. */
 std::size_t columnsOf(
 	const float* xyz, std::size_t n, const TGroundBand& band, int* columns,
