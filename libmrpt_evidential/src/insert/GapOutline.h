@@ -37,25 +37,24 @@ template <typename Fn>
 void forEachGap(const CPolarSourceGrid& polar, Fn&& fn)
 {
 	const std::size_t n = polar.sectorCount();
+	if (n == 0) return;
 	const double spacing = polar.sectorSpacing();
-	if (!polar.fullTurn()) fn(std::size_t{0}, std::size_t{0}, std::size_t{0}, 0.5 * spacing);
-	const std::size_t gaps = polar.fullTurn() ? n : n - 1;
-	for (std::size_t g = 0; g < gaps; ++g) fn(g, (g + 1) % n, g + 1, spacing);
-	if (!polar.fullTurn()) fn(n - 1, n - 1, n, 0.5 * spacing);
+	const bool fullTurn = polar.fullTurn();
+	// By the gap's start among the directions, i = 0 (a half gap) or 1 to n;
+	// fn called from one place, so that the compiler puts it in the loop.
+	for (std::size_t i = fullTurn ? 1 : 0; i <= n; ++i)
+	{
+		const bool half = !fullTurn && (i == 0 || i == n);
+		const std::size_t lo = i == 0 ? 0 : i - 1;
+		const std::size_t hi = i < n ? i : (fullTurn ? 0 : n - 1);
+		fn(lo, hi, i, half ? 0.5 * spacing : spacing);
+	}
 }
-
-/** The radius of an outline over a gap's two halves, up to and from its
- * middle: the same for most gaps, not beside a sector without evidence. */
-struct TGapRadius
-{
-	double lo, hi;
-	TGapRadius(double both) : lo(both), hi(both) {}
-	TGapRadius(double first, double second) : lo(first), hi(second) {}
-};
 
 /** Builds the outline of a region made of one radius per gap between sector
  * centres (and per half sector at the ends of a scan that is not a full
- * turn): radiusOf(lo, hi) for the gap between sectors lo and hi, a
+ * turn): radiusOf(lo, hi, i) for the gap between sectors lo and hi, i its
+ * entry among the directions (as forEachGap() gives them), a
  * TGapRadius (a gap whose halves differ splits at its middle, turned by
  * kCentreLineSlack into the longer half for an outline inside the region,
  * into the shorter one for an outline that holds it). Arcs become
@@ -79,7 +78,6 @@ void outline(
 		if (size >= 2 && polygon[size - 2] == x && polygon[size - 1] == y) return;
 		polygon.push_back(x);
 		polygon.push_back(y);
-		if (box) box->add(x, y);
 	};
 	const double dir = sensor.mirrored ? -1.0 : 1.0;
 	// The arc from direction entry i to entry j, `width` radians wide. Nearly
@@ -136,13 +134,27 @@ void outline(
 							double width) {
 		addArcIn(directions.data(), radius, flank, i, j, width);
 	};
+	// Nearly every gap is one sector wide, one chord at one radius: its two
+	// corners, as addArcIn() works them out, without its cases.
+	const double spacing = polar.sectorSpacing();
+	const bool oneChord = std::ceil(spacing / (M_PI / 8)) <= 1.0;
+	const double chordPushOut = outside ? 1.0 / std::cos(0.5 * spacing) : 1.0;
 	// A scan that is not a full turn starts and ends at the sensor.
 	if (!polar.fullTurn()) addPoint(sensor.x, sensor.y);
 	forEachGap(polar, [&](std::size_t lo, std::size_t hi, std::size_t i, double width) {
-		const TGapRadius radius = radiusOf(lo, hi);
+		const TGapRadius radius = radiusOf(lo, hi, i);
 		if (radius.lo == radius.hi)
 		{
-			addArc(radius.lo, flankOf(lo, hi), i, i + 1, width);
+			const double flank = flankOf(lo, hi);
+			if (oneChord && width == spacing && radius.lo > 0.0 && !(flank > 0.0))
+			{
+				const double rho = radius.lo * chordPushOut;
+				const double* d = &directions[2 * i];
+				addPoint(sensor.x + rho * d[0], sensor.y + rho * d[1]);
+				addPoint(sensor.x + rho * d[2], sensor.y + rho * d[3]);
+				return;
+			}
+			addArc(radius.lo, flank, i, i + 1, width);
 			return;
 		}
 		// The gap's start, its split and its end.
@@ -156,5 +168,13 @@ void outline(
 		addArcIn(splitDirections, radius.lo, 0.0, 0, 1, half);
 		addArcIn(splitDirections, radius.hi, 0.0, 1, 2, width - half);
 	});
+	// The box once the corners are known (min and max in any order).
+	if (box)
+	{
+		Box corners = *box;
+		for (std::size_t k = 0; k + 1 < polygon.size(); k += 2)
+			corners.add(polygon[k], polygon[k + 1]);
+		*box = corners;
+	}
 }
 }  // namespace mrpt_evidential::detail

@@ -179,6 +179,30 @@ void CPolarToCartesian::setup(
 			m_box.add(sensor.x + r * c, sensor.y + r * sn);
 		}
 	}
+	// The uniform region: the free mass most sectors start with (none when
+	// no sector starts free). Between two sectors that both start with mass
+	// w, the mix is w itself short of both free runs' ends and of both free
+	// limits (past the nearer limit the mixed path cuts the free evidence):
+	// mixAt()'s own bounds, worked out once per sector (each bounds the two
+	// gaps beside it). A hair less, so that a corner of the outline, which
+	// lies on the arc, holds no cell that mixAt() finds past the bound.
+	const auto best = std::max_element(
+		votes.begin(), votes.end(),
+		[](const auto& a, const auto& b) { return a.second < b.second; });
+	const bool uniform = best != votes.end() && best->first > 0.0;
+	const double w = uniform ? best->first : 0.0;
+	if (uniform)
+	{
+		m_uniformMass = Mass::simpleFree(w);
+		m_uniformReach.resize(n);
+		for (std::size_t s = 0; s < n; ++s)
+		{
+			const SectorSpan& span = m_sectorSpans[s];
+			m_uniformReach[s] = span.freeEnd2 > 0.0 && polar.freeMass(s) == w
+				? (1.0 - 1e-9) * std::min(m_freeEnd[s], span.freeLimit)
+				: 0.0;
+		}
+	}
 	// A sector without evidence holds nothing at every range; one with a
 	// free run, its free mass up to the run's end.
 	const auto constantTo2 = [](const SectorSpan& span) {
@@ -187,11 +211,14 @@ void CPolarToCartesian::setup(
 	const auto constantFree = [](const SectorSpan& span) {
 		return span.reach2 <= 0.0 ? 0.0 : span.freeMass;
 	};
+	// Each gap's mix, and the radii of the two outlines over it, in one walk.
 	// Between a sector whose impact is near and one that reaches far (a
 	// pole, a car's edge, a tree before an open street), a gap holds nothing
 	// from the nearer one's free limit to the farther one's impacts: the
 	// area of those bands is added up as they are found.
 	m_gapMixes.assign(n + 1, GapMix{0.0, 0.0, 0.0, VacuousBand{}, false, 0.0, 0.0});
+	m_informedRadii.resize(n + 1, TGapRadius(0.0));
+	m_uniformRadii.resize(n + 1, TGapRadius(0.0));
 	forEachGap(polar, [&](std::size_t lo, std::size_t hi, std::size_t i, double width) {
 		GapMix& gap = m_gapMixes[i];
 		gap.vacuous = vacuousBand(lo, hi);
@@ -199,12 +226,38 @@ void CPolarToCartesian::setup(
 		// Beside a sector without evidence, the band lies on the other half.
 		m_vacuousArea += (gap.nearestOnly ? 0.25 : 0.5) * width *
 			(gap.vacuous.to2 - gap.vacuous.from2);
+		// Between two sector centres the mix reaches as far as the longer
+		// sector; before the first and after the last centre, and on the
+		// half of a gap beside a sector without evidence, the sector alone
+		// (the silent half as far as the bridge, which stops short of the
+		// other's reach). In the uniform region the silent half holds,
+		// within the bridge, what the other does (the hair less as for every
+		// sector's reach above).
+		const double bridge = bridgeRadius(lo, hi);
+		if (!gap.nearestOnly)
+		{
+			m_informedRadii[i] = TGapRadius(std::max(m_reach[lo], m_reach[hi]));
+			if (uniform)
+				m_uniformRadii[i] =
+					TGapRadius(std::min(m_uniformReach[lo], m_uniformReach[hi]));
+		}
+		else
+		{
+			m_informedRadii[i] =
+				TGapRadius(std::max(m_reach[lo], bridge), std::max(m_reach[hi], bridge));
+			if (uniform)
+			{
+				const bool held = std::max(m_uniformReach[lo], m_uniformReach[hi]) > 0.0;
+				const double bridged = held ? (1.0 - 1e-9) * bridge : 0.0;
+				m_uniformRadii[i] = TGapRadius(
+					std::max(m_uniformReach[lo], bridged), std::max(m_uniformReach[hi], bridged));
+			}
+		}
 		if (lo == hi) return;  // a half gap: the sector alone, no mix
 		const SectorSpan &a = m_sectorSpans[lo], &b = m_sectorSpans[hi];
 		const double limit = std::min(a.freeLimit, b.freeLimit);
 		gap.simpleEnd2 = std::min({constantTo2(a), constantTo2(b), limit * limit});
 		gap.loFree = constantFree(a), gap.hiFree = constantFree(b);
-		const double bridge = bridgeRadius(lo, hi);
 		gap.bridge2 = bridge * bridge;
 		gap.bridgeWeight = a.reach2 <= 0.0 ? 1.0 : 0.0;
 	});
@@ -212,52 +265,15 @@ void CPolarToCartesian::setup(
 	// either end of the position range.
 	if (polar.fullTurn()) m_gapMixes[0] = m_gapMixes[n];
 
-	// Between two sector centres the mix reaches as far as the longer
-	// sector; before the first and after the last centre, and on the half of
-	// a gap beside a sector without evidence, the sector alone (the silent
-	// half as far as the bridge, which stops short of the other's reach).
+	const auto radiusFrom = [](const std::vector<TGapRadius>& radii) {
+		return [&radii](std::size_t, std::size_t, std::size_t i) { return radii[i]; };
+	};
 	outline(
-		m_polygon, &m_box, polar, sensor, m_directions, true,
-		[&](std::size_t lo, std::size_t hi) {
-			if (!nearestOnly(lo, hi)) return TGapRadius(std::max(m_reach[lo], m_reach[hi]));
-			const double bridge = bridgeRadius(lo, hi);
-			return TGapRadius(std::max(m_reach[lo], bridge), std::max(m_reach[hi], bridge));
-		});
-
-	// The uniform region: the free mass most sectors start with, where both
-	// sectors around a gap hold it in the two bins around every centre.
-	const auto best = std::max_element(
-		votes.begin(), votes.end(),
-		[](const auto& a, const auto& b) { return a.second < b.second; });
-	if (best == votes.end() || best->first <= 0.0) return;
-	const double w = best->first;
-	m_uniformMass = Mass::simpleFree(w);
-	// Between two sectors that both start with mass w, the mix is w itself
-	// short of both free runs' ends and of both free limits (past the nearer
-	// limit the mixed path cuts the free evidence): mixAt()'s own bounds,
-	// worked out once per sector (each bounds the two gaps beside it). A
-	// hair less, so that a corner of the outline, which lies on the arc,
-	// holds no cell that mixAt() finds past the bound.
-	m_uniformReach.resize(n);
-	for (std::size_t s = 0; s < n; ++s)
-	{
-		const SectorSpan& span = m_sectorSpans[s];
-		m_uniformReach[s] = span.freeEnd2 > 0.0 && polar.freeMass(s) == w
-			? (1.0 - 1e-9) * std::min(m_freeEnd[s], span.freeLimit)
-			: 0.0;
-	}
-	outline(
-		m_uniformPolygon, nullptr, polar, sensor, m_directions, false,
-		[&](std::size_t lo, std::size_t hi) {
-			if (!nearestOnly(lo, hi))
-				return TGapRadius(std::min(m_uniformReach[lo], m_uniformReach[hi]));
-			// The silent half holds, within the bridge, what the other does
-			// (the hair less as for every sector's reach above).
-			const bool uniform = std::max(m_uniformReach[lo], m_uniformReach[hi]) > 0.0;
-			const double bridged = uniform ? (1.0 - 1e-9) * bridgeRadius(lo, hi) : 0.0;
-			return TGapRadius(
-				std::max(m_uniformReach[lo], bridged), std::max(m_uniformReach[hi], bridged));
-		});
+		m_polygon, &m_box, polar, sensor, m_directions, true, radiusFrom(m_informedRadii));
+	if (uniform)
+		outline(
+			m_uniformPolygon, nullptr, polar, sensor, m_directions, false,
+			radiusFrom(m_uniformRadii));
 }
 
 double CPolarToCartesian::bridgeRadius(std::size_t lo, std::size_t hi) const
@@ -368,7 +384,7 @@ CPolarToCartesian::TRows CPolarToCartesian::prepareRows(const GridGeometry& grid
 		// outlines' corners then stay near the bands' near ends, instead of
 		// running to the sensor and crossing every row near it.
 		const auto bandEnd = [this](bool far) {
-			return [this, far](std::size_t lo, std::size_t hi) {
+			return [this, far](std::size_t lo, std::size_t hi, std::size_t) {
 				const VacuousBand band = vacuousBand(lo, hi);
 				if (band.to2 > band.from2) return std::sqrt(far ? band.to2 : band.from2);
 				const SectorSpan &a = m_sectorSpans[lo], &b = m_sectorSpans[hi];

@@ -49,6 +49,16 @@ struct Box
 
 namespace detail
 {
+/** The radius of an outline over a gap's two halves, up to and from its
+ * middle (detail::outline()): the same for most gaps, not beside a sector
+ * without evidence. */
+struct TGapRadius
+{
+	double lo, hi;
+	TGapRadius(double both) : lo(both), hi(both) {}
+	TGapRadius(double first, double second) : lo(first), hi(second) {}
+};
+
 /** v clamped to [lo, hi], then converted: a point a billion cells away must
  * not overflow an int. NaN gives lo. */
 inline int clampToInt(double v, int lo, int hi)
@@ -140,6 +150,8 @@ class CPolarToCartesian
 	{
 		return {m_directions[2 * s + 2], m_directions[2 * s + 3]};
 	}
+	/** Every sector's sectorDirection() in turn, as (x, y) pairs. */
+	const double* sectorDirections() const { return m_directions.data() + 2; }
 
 	/** True when a beam crossed world point (x, y) but gave its cell no
 	 * free evidence: each of the two sectors around the point either
@@ -384,6 +396,9 @@ class CPolarToCartesian
 	 * it bounds the uniform region, and its reach and free run's end (0
 	 * without one) unsquared, for the outlines (setup()'s scratch). */
 	std::vector<double> m_nearest, m_uniformReach, m_reach, m_freeEnd;
+	/** The informed and the uniform outlines' radii over each gap, by its
+	 * entry among the directions (setup()'s scratch). */
+	std::vector<detail::TGapRadius> m_informedRadii, m_uniformRadii;
 	/** Outlines of the informed and of the uniform regions (x, y pairs), and
 	 * the world directions of their corners. */
 	std::vector<double> m_polygon, m_uniformPolygon, m_directions;

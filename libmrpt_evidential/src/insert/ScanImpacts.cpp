@@ -52,6 +52,24 @@ MRPT_EVIDENTIAL_CPU_CLONES void placesInto(
 		out.bin[i] = p.bin, out.column[i] = p.column, out.row[i] = p.row;
 	}
 }
+
+/** The places of the n sectors' nearest impacts (`nearest`, any value for a
+ * sector without one) in one loop that vectorizes: a 2-D scan's impacts,
+ * one a sector, three divisions each. `directions` holds each sector's
+ * centre line as (x, y) pairs. */
+MRPT_EVIDENTIAL_CPU_CLONES void nearestPlacesInto(
+	const double* nearest, const double* directions, std::size_t n,
+	const PlanarSensorPose& sensor, const GridGeometry& grid, double binSize,
+	std::size_t binCount, double* bin, double* column, double* row)
+{
+	const auto bins = static_cast<double>(binCount);
+	for (std::size_t s = 0; s < n; ++s)
+	{
+		const TPlace p = placeOf(
+			nearest[s], directions[2 * s], directions[2 * s + 1], sensor, grid, binSize, bins);
+		bin[s] = p.bin, column[s] = p.column, row[s] = p.row;
+	}
+}
 }  // namespace
 
 void CScanImpacts::build(
@@ -62,14 +80,29 @@ void CScanImpacts::build(
 	m_rowOf.clear();
 	if (transform.box().empty()) return;
 	const double reach = static_cast<double>(polar.binCount()) * polar.binSize();
+	// Each sector's nearest impact placed in one vector loop beforehand (a
+	// 2-D scan has no other).
+	const std::size_t n = polar.sectorCount();
+	m_nearest.resize(4 * n);
+	double *const nearest = m_nearest.data(), *const nearestBin = nearest + n,
+				  *const nearestColumn = nearestBin + n, *const nearestRow = nearestColumn + n;
+	for (std::size_t s = 0; s < n; ++s)
+	{
+		const TImpactRanges ranges = polar.impacts(s);
+		nearest[s] = ranges.empty() ? 0.0 : ranges.front();
+	}
+	nearestPlacesInto(
+		nearest, transform.sectorDirections(), n, sensor, grid, polar.binSize(),
+		polar.binCount(), nearestBin, nearestColumn, nearestRow);
 	TPlaces places;
-	for (std::size_t s = 0; s < polar.sectorCount(); ++s)
+	for (std::size_t s = 0; s < n; ++s)
 	{
 		const TImpactRanges ranges = polar.impacts(s);
 		if (ranges.empty() || !(ranges.front() < reach)) continue;
 		const auto [c, sn] = transform.sectorDirection(s);
 		// A sector of many impacts (a cloud's) has them placed in chunks by
-		// the vector code; a few (a 2-D scan's one) are not worth the call.
+		// the vector code; a few have their first placed above, the rest one
+		// by one.
 		const bool chunked = ranges.size() >= kChunkFrom;
 		for (std::size_t i = 0; i < ranges.size(); ++i)
 		{
@@ -79,10 +112,10 @@ void CScanImpacts::build(
 				placesInto(
 					ranges.data() + i, std::min(kChunk, ranges.size() - i), c, sn, sensor, grid,
 					polar.binSize(), polar.binCount(), places);
-			const TPlace place = chunked
-				? TPlace{places.bin[k], places.column[k], places.row[k]}
-				: placeOf(ranges[i], c, sn, sensor, grid, polar.binSize(),
-						  static_cast<double>(polar.binCount()));
+			const TPlace place = chunked ? TPlace{places.bin[k], places.column[k], places.row[k]}
+				: i == 0 ? TPlace{nearestBin[s], nearestColumn[s], nearestRow[s]}
+						 : placeOf(ranges[i], c, sn, sensor, grid, polar.binSize(),
+								   static_cast<double>(polar.binCount()));
 			const double occupied = polar.massAt(s, static_cast<std::size_t>(place.bin)).occupied;
 			if (!(occupied > 0.0)) continue;
 			const double fx = place.column, fy = place.row;
