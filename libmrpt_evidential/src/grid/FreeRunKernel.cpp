@@ -66,23 +66,27 @@ TFused fuseFree(__m128 f, __m128 o, __m128 w)
 	const __m128 u = _mm_sub_ps(_mm_sub_ps(scale, f), o);
 	if constexpr (isCautious(Rule))
 	{
-		// EvidentialGridStorage::cautiousFree().
-		const __m128 tiny = _mm_set1_ps(1e-30f);
-		const __m128 weightFree =
-			_mm_min_ps(_mm_div_ps(u, _mm_max_ps(_mm_add_ps(f, u), tiny)), _mm_sub_ps(one, w));
-		const __m128 weightOccupied = _mm_div_ps(u, _mm_max_ps(_mm_add_ps(o, u), tiny));
-		__m128 nf = _mm_mul_ps(_mm_mul_ps(scale, _mm_sub_ps(one, weightFree)), weightOccupied),
-			   no = _mm_mul_ps(_mm_mul_ps(scale, _mm_sub_ps(one, weightOccupied)), weightFree);
+		// EvidentialGridStorage::cautiousFree(): both of its cases, selected.
+		const __m128 tiny = _mm_set1_ps(1e-30f), notW = _mm_sub_ps(one, w);
+		const __m128 cellsWeight = _mm_cmple_ps(u, _mm_mul_ps(notW, _mm_add_ps(f, u)));
+		const auto select = [&cellsWeight](__m128 ifCells, __m128 otherwise) {
+			return _mm_or_ps(
+				_mm_and_ps(cellsWeight, ifCells), _mm_andnot_ps(cellsWeight, otherwise));
+		};
+		const __m128 wu = _mm_mul_ps(w, u), notWo = _mm_mul_ps(notW, o);
 		if constexpr (Rule == FreeFusion::CautiousNormalized)
 		{
-			const __m128 keep = _mm_max_ps(
-				_mm_sub_ps(
-					_mm_add_ps(weightFree, weightOccupied), _mm_mul_ps(weightFree, weightOccupied)),
-				tiny);
-			nf = _mm_div_ps(nf, keep);
-			no = _mm_div_ps(no, keep);
+			const __m128 s = _mm_div_ps(scale, _mm_max_ps(_mm_add_ps(u, notWo), tiny));
+			return {select(f, _mm_mul_ps(wu, s)), select(o, _mm_mul_ps(notWo, s)),
+					_mm_setzero_ps()};
 		}
-		return {nf, no, _mm_setzero_ps()};
+		const __m128 s = _mm_div_ps(
+			select(_mm_mul_ps(scale, u), scale),
+			select(
+				_mm_max_ps(_mm_mul_ps(_mm_add_ps(f, u), _mm_add_ps(o, u)), tiny),
+				_mm_max_ps(_mm_add_ps(o, u), tiny)));
+		return {select(_mm_mul_ps(f, s), _mm_mul_ps(wu, s)),
+				select(_mm_mul_ps(o, s), _mm_mul_ps(notWo, s)), _mm_setzero_ps()};
 	}
 	const __m128 lost = _mm_mul_ps(o, w), newConflict = _mm_div_ps(lost, scale);
 	// At total conflict both products are 0 and n becomes vacuous.

@@ -95,24 +95,28 @@ TFused8 fuseFree(__m256 f, __m256 o, __m256 w)
 	const __m256 u = _mm256_sub_ps(_mm256_sub_ps(scale, f), o);
 	if constexpr (isCautious(Rule))
 	{
-		// EvidentialGridStorage::cautiousFree().
-		const __m256 tiny = _mm256_set1_ps(1e-30f);
-		const __m256 weightFree = _mm256_min_ps(
-			_mm256_div_ps(u, _mm256_max_ps(_mm256_add_ps(f, u), tiny)), _mm256_sub_ps(one, w));
-		const __m256 weightOccupied = _mm256_div_ps(u, _mm256_max_ps(_mm256_add_ps(o, u), tiny));
-		__m256 nf = _mm256_mul_ps(_mm256_mul_ps(scale, _mm256_sub_ps(one, weightFree)), weightOccupied),
-			   no = _mm256_mul_ps(_mm256_mul_ps(scale, _mm256_sub_ps(one, weightOccupied)), weightFree);
+		// EvidentialGridStorage::cautiousFree(): both of its cases, selected.
+		const __m256 tiny = _mm256_set1_ps(1e-30f), notW = _mm256_sub_ps(one, w);
+		const __m256 cellsWeight =
+			_mm256_cmp_ps(u, _mm256_mul_ps(notW, _mm256_add_ps(f, u)), _CMP_LE_OQ);
+		const auto select = [&cellsWeight](__m256 ifCells, __m256 otherwise) {
+			return _mm256_blendv_ps(otherwise, ifCells, cellsWeight);
+		};
+		const __m256 wu = _mm256_mul_ps(w, u), notWo = _mm256_mul_ps(notW, o);
 		if constexpr (Rule == FreeFusion::CautiousNormalized)
 		{
-			const __m256 keep = _mm256_max_ps(
-				_mm256_sub_ps(
-					_mm256_add_ps(weightFree, weightOccupied),
-					_mm256_mul_ps(weightFree, weightOccupied)),
-				tiny);
-			nf = _mm256_div_ps(nf, keep);
-			no = _mm256_div_ps(no, keep);
+			const __m256 s =
+				_mm256_div_ps(scale, _mm256_max_ps(_mm256_add_ps(u, notWo), tiny));
+			return {select(f, _mm256_mul_ps(wu, s)), select(o, _mm256_mul_ps(notWo, s)),
+					_mm256_setzero_ps()};
 		}
-		return {nf, no, _mm256_setzero_ps()};
+		const __m256 s = _mm256_div_ps(
+			select(_mm256_mul_ps(scale, u), scale),
+			select(
+				_mm256_max_ps(_mm256_mul_ps(_mm256_add_ps(f, u), _mm256_add_ps(o, u)), tiny),
+				_mm256_max_ps(_mm256_add_ps(o, u), tiny)));
+		return {select(_mm256_mul_ps(f, s), _mm256_mul_ps(wu, s)),
+				select(_mm256_mul_ps(o, s), _mm256_mul_ps(notWo, s)), _mm256_setzero_ps()};
 	}
 	const __m256 lost = _mm256_mul_ps(o, w), newConflict = _mm256_div_ps(lost, scale);
 	const __m256 normalize = Rule == FreeFusion::Dempster

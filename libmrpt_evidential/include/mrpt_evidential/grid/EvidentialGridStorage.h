@@ -325,22 +325,29 @@ class EvidentialGridStorage
 	 * Omega. With w's weight 1 - w on F and 1 on O and the cell's
 	 * u / (f + u) on F, u / (o + u) on O (and at least 1 on the empty set,
 	 * as for every mass without conflict), the rule keeps the smaller weight
-	 * of each. The kernels do the same operations in the same order. */
+	 * of each. The products of the weights fold into one division: where
+	 * the cell's weight on F is the smaller (u <= (1 - w)(f + u)),
+	 * n(F) = f s and n(O) = o s, s = scale u / ((f + u)(o + u)), and with
+	 * the normalization s = 1 (the cell is given back as it was); otherwise
+	 * n(F) = w u s and n(O) = (1 - w) o s, s = scale / (o + u), normalized
+	 * scale / (u + (1 - w) o). For u > 0, which isLoudFor() leaves to the
+	 * bulk. The kernels do the same operations in the same order. */
 	template <bool Normalizes>
 	static void cautiousFree(float f, float o, float u, float w, float& nf, float& no)
 	{
 		const float scale = static_cast<float>(kMassScale), tiny = 1e-30f;
-		const float weightFree = std::min(u / std::max(f + u, tiny), 1.0f - w);
-		const float weightOccupied = u / std::max(o + u, tiny);
-		nf = scale * (1.0f - weightFree) * weightOccupied;
-		no = scale * (1.0f - weightOccupied) * weightFree;
-		if constexpr (Normalizes)
+		const float notW = 1.0f - w;
+		const bool cellsWeight = u <= notW * (f + u);
+		if (Normalizes && cellsWeight)
 		{
-			const float keep =
-				std::max(weightFree + weightOccupied - weightFree * weightOccupied, tiny);
-			nf /= keep;
-			no /= keep;
+			nf = f, no = o;
+			return;
 		}
+		const float s = cellsWeight ? scale * u / std::max((f + u) * (o + u), tiny)
+			: Normalizes            ? scale / std::max(u + notW * o, tiny)
+									: scale / std::max(o + u, tiny);
+		nf = cellsWeight ? f * s : w * u * s;
+		no = cellsWeight ? o * s : notW * o * s;
 	}
 	/** fuseSimpleFree<Decays, true>() (a grid that keeps conflict) into
 	 * every cell of [first, first + count), four at a time where the target
