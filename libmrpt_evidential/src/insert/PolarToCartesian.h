@@ -152,6 +152,9 @@ class CPolarToCartesian
 	}
 	/** Every sector's sectorDirection() in turn, as (x, y) pairs. */
 	const double* sectorDirections() const { return m_directions.data() + 2; }
+	/** Every sector's nearest impact in turn, +inf for a sector without one
+	 * (valid as sectorDirection()). */
+	const double* nearestImpacts() const { return m_nearest.data(); }
 
 	/** True when a beam crossed world point (x, y) but gave its cell no
 	 * free evidence: each of the two sectors around the point either
@@ -392,9 +395,9 @@ class CPolarToCartesian
 	 * it holds enough cells, prepareRows() outlines them and the visit
 	 * leaves them out. */
 	double m_vacuousArea = 0.0;
-	/** Each sector's nearest impact, +inf without one, the range within which
-	 * it bounds the uniform region, and its reach and free run's end (0
-	 * without one) unsquared, for the outlines (setup()'s scratch). */
+	/** Each sector's nearest impact, +inf without one (nearestImpacts()), the
+	 * range within which it bounds the uniform region, and its reach and free
+	 * run's end (0 without one) unsquared, for the outlines. */
 	std::vector<double> m_nearest, m_uniformReach, m_reach, m_freeEnd;
 	/** The informed and the uniform outlines' radii over each gap, by its
 	 * entry among the directions (setup()'s scratch). */

@@ -53,8 +53,9 @@ MRPT_EVIDENTIAL_CPU_CLONES void placesInto(
 	}
 }
 
-/** The places of the n sectors' nearest impacts (`nearest`, any value for a
- * sector without one) in one loop that vectorizes: a 2-D scan's impacts,
+/** The places of the n sectors' nearest impacts (`nearest`, +inf for a
+ * sector without one, whose place no one reads) in one loop that
+ * vectorizes: a 2-D scan's impacts,
  * one a sector, three divisions each. `directions` holds each sector's
  * centre line as (x, y) pairs. */
 MRPT_EVIDENTIAL_CPU_CLONES void nearestPlacesInto(
@@ -83,17 +84,12 @@ void CScanImpacts::build(
 	// Each sector's nearest impact placed in one vector loop beforehand (a
 	// 2-D scan has no other).
 	const std::size_t n = polar.sectorCount();
-	m_nearest.resize(4 * n);
-	double *const nearest = m_nearest.data(), *const nearestBin = nearest + n,
-				  *const nearestColumn = nearestBin + n, *const nearestRow = nearestColumn + n;
-	for (std::size_t s = 0; s < n; ++s)
-	{
-		const TImpactRanges ranges = polar.impacts(s);
-		nearest[s] = ranges.empty() ? 0.0 : ranges.front();
-	}
+	m_nearestPlaces.resize(3 * n);
+	double *const nearestBin = m_nearestPlaces.data(), *const nearestColumn = nearestBin + n,
+				  *const nearestRow = nearestColumn + n;
 	nearestPlacesInto(
-		nearest, transform.sectorDirections(), n, sensor, grid, polar.binSize(),
-		polar.binCount(), nearestBin, nearestColumn, nearestRow);
+		transform.nearestImpacts(), transform.sectorDirections(), n, sensor, grid,
+		polar.binSize(), polar.binCount(), nearestBin, nearestColumn, nearestRow);
 	TPlaces places;
 	for (std::size_t s = 0; s < n; ++s)
 	{

@@ -126,9 +126,9 @@ class CScanImpacts
 	/** sortByIndex()'s buffers, kept between scans. */
 	std::vector<TImpactCell> m_sorted;
 	std::vector<std::size_t> m_rowStart;
-	/** build()'s buffer: each sector's nearest impact, then its bin, column
-	 * and row (four blocks of one value a sector). */
-	std::vector<double> m_nearest;
+	/** build()'s buffer: the bin, column and row of each sector's nearest
+	 * impact (three blocks of one value a sector). */
+	std::vector<double> m_nearestPlaces;
 };
 
 /** The observed mass of a cell that holds impacts: the mix with its free
