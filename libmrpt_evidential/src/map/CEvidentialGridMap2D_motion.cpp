@@ -91,6 +91,10 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 	};
 	const double w = uniform.free;
 	const std::uint16_t occupiedBelow = occupiedBelowFor(w);
+	// Runs shorter than this are fused cell by cell (fewer instructions on
+	// SENA and the stock scan, counted; from four cells the bulk's block of
+	// four pays).
+	constexpr std::size_t kFewCells = 4;
 	const GridGeometry& g = geometry();
 	motion.judgeCrossedArrivals(m_grid, [&](std::size_t idx) {
 		return transform.crossedWithoutFreeEvidence(
@@ -105,13 +109,27 @@ void CEvidentialGridMap2D::fuseWithMotion(CScanImpacts& impacts)
 		auto hits = impacts.cursorFrom(g.index(0, band.firstRow));
 		constexpr bool kDecays = decltype(decays)::value;
 		const auto fuseRun = [&](std::size_t first, std::size_t count) {
-			// The quiet cells in bulk, then the loud ones one by one, in order.
-			band.loud.clear();
 			withBulkRule([&](auto bulk) {
-				m_grid.fuseQuietFreeRun<kDecays, decltype(bulk)::value>(
+				constexpr FreeFusion kRule = decltype(bulk)::value;
+				// A run of a few cells (a quarter of SENA's), cell by cell as
+				// the bulk's tail fuses them: the bulk's call and set-up cost
+				// more than such a run's cells.
+				if (count < kFewCells)
+				{
+					for (std::size_t idx = first; idx < first + count; ++idx)
+						if (m_grid.isLoudFor<kRule>(idx, occupiedBelow))
+							single(band.motion, idx, uniform, false);
+						else
+							m_grid.fuseSimpleFree<kDecays, false, kRule>(idx, static_cast<float>(w));
+					return;
+				}
+				// The quiet cells in bulk, then the loud ones one by one, in
+				// order (a cell's fusion reads only the cell).
+				band.loud.clear();
+				m_grid.fuseQuietFreeRun<kDecays, kRule>(
 					first, count, static_cast<float>(w), occupiedBelow, band.loud);
+				for (const std::size_t idx : band.loud) single(band.motion, idx, uniform, false);
 			});
-			for (const std::size_t idx : band.loud) single(band.motion, idx, uniform, false);
 		};
 		visitRowsCloned(
 			transform, g, band.firstRow, band.lastRow,

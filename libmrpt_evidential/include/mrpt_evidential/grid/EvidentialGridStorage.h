@@ -487,8 +487,10 @@ class EvidentialGridStorage
 	/** The normal part of an observed mass (vacuous at total conflict). */
 	static void normalPart(const Mass& m, double& f, double& o, double& u)
 	{
+		// A mass without conflict (every sensor model's) is its own normal
+		// part: 1 / 1 is not worked out.
 		const double keep = 1.0 - m.conflict;
-		const double toNormal = keep > 0.0 ? 1.0 / keep : 0.0;
+		const double toNormal = m.conflict == 0.0 ? 1.0 : keep > 0.0 ? 1.0 / keep : 0.0;
 		f = m.free * toNormal;
 		o = m.occupied * toNormal;
 		u = 1.0 - f - o;
@@ -501,7 +503,16 @@ class EvidentialGridStorage
 	void decayedNormal(const QuantizedCell& c, double& f, double& o, double& keep) const
 	{
 		const double d = decayFactor(c.stamp);
-		const double k = m_keepsConflict ? c.aside / kMassScale : 0.0;
+		if (!m_keepsConflict)
+		{
+			// K = 0: s = d, the same number without a division (a mixed
+			// cell's fusion waited on it).
+			keep = 1.0;
+			f = c.free * d;
+			o = c.occupied * d;
+			return;
+		}
+		const double k = c.aside / kMassScale;
 		keep = 1.0 - d * k;
 		const double s = d * (1.0 - k) / keep;
 		f = c.free * s;
