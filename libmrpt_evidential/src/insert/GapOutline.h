@@ -21,12 +21,6 @@ namespace mrpt_evidential::detail
  * free limit can differ; a band leaves such cells to the visit. */
 inline constexpr double kCentreLineSlack = 1e-5;
 
-/** No flanks: see outline(). */
-struct TNoFlanks
-{
-	double operator()(std::size_t, std::size_t) const { return 0.0; }
-};
-
 /** fn(lo, hi, i, width) for each gap between sector centres, in order: gap g
  * between sectors g and g + 1 (g + 1 wraps to 0 for the last gap of a full
  * turn), and at the ends of a scan that is not a full turn the half sectors
@@ -63,13 +57,15 @@ void forEachGap(const CPolarSourceGrid& polar, Fn&& fn)
  * inside it); a radius of 0 puts the sensor itself in the outline.
  * `directions` holds the world unit vectors of the gaps' ends (x, y pairs):
  * the start of sector 0's span, every centre, the end of the last span.
- * flankOf(lo, hi) > 0 also puts in the region, out to that radius, the
- * strips of kCentreLineSlack along the gap's two ends. */
-template <typename RadiusOf, typename FlankOf = TNoFlanks>
+ * `OffCentreLines`: the step between two gaps of different radii is turned
+ * off their centre line by kCentreLineSlack as a split is, so that within
+ * the slack of the line the region holds only the smaller radius (inside)
+ * or the larger one (outside); otherwise the step lies on the line. */
+template <bool OffCentreLines = false, typename RadiusOf>
 void outline(
 	std::vector<double>& polygon, Box* box, const CPolarSourceGrid& polar,
 	const PlanarSensorPose& sensor, const std::vector<double>& directions,
-	bool outside, RadiusOf radiusOf, FlankOf flankOf = {})
+	bool outside, RadiusOf radiusOf)
 {
 	polygon.clear();
 	const auto addPoint = [&](double x, double y) {
@@ -89,84 +85,110 @@ void outline(
 		return std::pair<double, double>{c * cx - s * cy, s * cx + c * cy};
 	};
 	// The arc from entry i to entry j of `dirs` (x, y pairs).
-	const auto addArcIn = [&](const double* dirs, double radius, double flank,
-							  std::size_t i, std::size_t j, double width) {
-		double cx = dirs[2 * i], cy = dirs[2 * i + 1];
-		double ex = dirs[2 * j], ey = dirs[2 * j + 1];
-		if (flank > 0.0)
-		{
-			// Out to the flank along the start, across the strip, and the
-			// arc between the strips; the same back at the end.
-			addPoint(sensor.x + flank * cx, sensor.y + flank * cy);
-			std::tie(cx, cy) = turned(cx, cy, kCentreLineSlack);
-			std::tie(ex, ey) = turned(ex, ey, -kCentreLineSlack);
-			addPoint(sensor.x + flank * cx, sensor.y + flank * cy);
-			width -= 2 * kCentreLineSlack;
-		}
+	const auto addArcIn = [&](const double* dirs, double radius, std::size_t i, std::size_t j,
+							  double width) {
 		if (radius <= 0.0)
+		{
 			addPoint(sensor.x, sensor.y);
-		else
-		{
-			if (width != lastWidth)
-			{
-				lastWidth = width;
-				pieces = std::max(1, static_cast<int>(std::ceil(width / (M_PI / 8))));
-				step = width / pieces;
-				pushOut = outside ? 1.0 / std::cos(0.5 * step) : 1.0;
-			}
-			const double rho = radius * pushOut;
-			addPoint(sensor.x + rho * cx, sensor.y + rho * cy);
-			for (int k = 1; k < pieces; ++k)
-			{
-				// Wide arcs only: turn the start direction by k steps.
-				const auto [x, y] = turned(cx, cy, k * step);
-				addPoint(sensor.x + rho * x, sensor.y + rho * y);
-			}
-			addPoint(sensor.x + rho * ex, sensor.y + rho * ey);
-		}
-		if (flank > 0.0)
-		{
-			addPoint(sensor.x + flank * ex, sensor.y + flank * ey);
-			addPoint(sensor.x + flank * dirs[2 * j], sensor.y + flank * dirs[2 * j + 1]);
-		}
-	};
-	const auto addArc = [&](double radius, double flank, std::size_t i, std::size_t j,
-							double width) {
-		addArcIn(directions.data(), radius, flank, i, j, width);
-	};
-	// Nearly every gap is one sector wide, one chord at one radius: its two
-	// corners, as addArcIn() works them out, without its cases.
-	const double spacing = polar.sectorSpacing();
-	const bool oneChord = std::ceil(spacing / (M_PI / 8)) <= 1.0;
-	const double chordPushOut = outside ? 1.0 / std::cos(0.5 * spacing) : 1.0;
-	// A scan that is not a full turn starts and ends at the sensor.
-	if (!polar.fullTurn()) addPoint(sensor.x, sensor.y);
-	forEachGap(polar, [&](std::size_t lo, std::size_t hi, std::size_t i, double width) {
-		const TGapRadius radius = radiusOf(lo, hi, i);
-		if (radius.lo == radius.hi)
-		{
-			const double flank = flankOf(lo, hi);
-			if (oneChord && width == spacing && radius.lo > 0.0 && !(flank > 0.0))
-			{
-				const double rho = radius.lo * chordPushOut;
-				const double* d = &directions[2 * i];
-				addPoint(sensor.x + rho * d[0], sensor.y + rho * d[1]);
-				addPoint(sensor.x + rho * d[2], sensor.y + rho * d[3]);
-				return;
-			}
-			addArc(radius.lo, flank, i, i + 1, width);
 			return;
 		}
-		// The gap's start, its split and its end.
-		double splitDirections[6];
+		if (width != lastWidth)
+		{
+			lastWidth = width;
+			pieces = std::max(1, static_cast<int>(std::ceil(width / (M_PI / 8))));
+			step = width / pieces;
+			pushOut = outside ? 1.0 / std::cos(0.5 * step) : 1.0;
+		}
+		const double cx = dirs[2 * i], cy = dirs[2 * i + 1];
+		const double rho = radius * pushOut;
+		addPoint(sensor.x + rho * cx, sensor.y + rho * cy);
+		for (int k = 1; k < pieces; ++k)
+		{
+			// Wide arcs only: turn the start direction by k steps.
+			const auto [x, y] = turned(cx, cy, k * step);
+			addPoint(sensor.x + rho * x, sensor.y + rho * y);
+		}
+		addPoint(sensor.x + rho * dirs[2 * j], sensor.y + rho * dirs[2 * j + 1]);
+	};
+	const std::size_t n = polar.sectorCount();
+	const bool fullTurn = polar.fullTurn();
+	// Off the centre lines: each gap's radii first, then each line's turn
+	// (0, or the slack towards the gap after it or before it).
+	std::vector<TGapRadius> radii;
+	if constexpr (OffCentreLines)
+	{
+		radii.assign(n + 1, TGapRadius(0.0));
+		forEachGap(polar, [&](std::size_t lo, std::size_t hi, std::size_t i, double) {
+			radii[i] = radiusOf(lo, hi, i);
+		});
+	}
+	const auto turnAt = [&](std::size_t line) {
+		if constexpr (!OffCentreLines) return 0.0;
+		if (fullTurn && line == n + 1) line = 1;  // centre 0 again
+		if (!fullTurn && (line == 0 || line == n + 1)) return 0.0;  // the span's ends
+		const double before = radii[fullTurn && line == 1 ? n : line - 1].hi,
+					 after = radii[line].lo;
+		if (before == after) return 0.0;
+		return (before < after) != outside ? kCentreLineSlack : -kCentreLineSlack;
+	};
+	const double slackC = std::cos(kCentreLineSlack), slackS = dir * std::sin(kCentreLineSlack);
+	// Direction entry `line` turned by turnAt(line), into out[0], out[1].
+	const auto lineDirection = [&](std::size_t line, double turn, double* out) {
+		const double x = directions[2 * line], y = directions[2 * line + 1];
+		if (turn == 0.0)
+			out[0] = x, out[1] = y;
+		else
+		{
+			const double s = turn > 0.0 ? slackS : -slackS;
+			out[0] = slackC * x - s * y, out[1] = s * x + slackC * y;
+		}
+	};
+	// Nearly every gap is one sector wide, one chord at one radius: its two
+	// corners, as addArcIn() works them out, without its cases (pushed out
+	// for the widest such gap, turned by the slack at both ends).
+	const double spacing = polar.sectorSpacing();
+	const double widest = spacing + (OffCentreLines ? 2 * kCentreLineSlack : 0.0);
+	const bool oneChord = std::ceil(widest / (M_PI / 8)) <= 1.0;
+	const double chordPushOut = outside ? 1.0 / std::cos(0.5 * widest) : 1.0;
+	// A scan that is not a full turn starts and ends at the sensor.
+	if (!fullTurn) addPoint(sensor.x, sensor.y);
+	forEachGap(polar, [&](std::size_t lo, std::size_t hi, std::size_t i, double width) {
+		TGapRadius radius(0.0);
+		if constexpr (OffCentreLines)
+			radius = radii[i];
+		else
+			radius = radiusOf(lo, hi, i);
+		// The gap's start and end: its lines' own directions, or turned.
+		const double startTurn = turnAt(i), endTurn = turnAt(i + 1);
+		double turnedEnds[4];
+		const double* ends = &directions[2 * i];  // (x, y) of the start, then the end
+		if constexpr (OffCentreLines)
+		{
+			lineDirection(i, startTurn, turnedEnds);
+			lineDirection(i + 1, endTurn, turnedEnds + 2);
+			ends = turnedEnds;
+		}
+		if (radius.lo == radius.hi)
+		{
+			if (oneChord && width == spacing && radius.lo > 0.0)
+			{
+				const double rho = radius.lo * chordPushOut;
+				addPoint(sensor.x + rho * ends[0], sensor.y + rho * ends[1]);
+				addPoint(sensor.x + rho * ends[2], sensor.y + rho * ends[3]);
+				return;
+			}
+			addArcIn(ends, radius.lo, 0, 1, width - startTurn + endTurn);
+			return;
+		}
+		// The split between the two halves.
 		const bool towardsHi = (radius.lo < radius.hi) != outside;
 		const double half = 0.5 * width + (towardsHi ? kCentreLineSlack : -kCentreLineSlack);
-		std::copy_n(&directions[2 * i], 2, splitDirections);
-		std::tie(splitDirections[2], splitDirections[3]) =
-			turned(directions[2 * i], directions[2 * i + 1], half);
-		std::copy_n(&directions[2 * i + 2], 2, splitDirections + 4);
-		addArcIn(splitDirections, radius.lo, 0.0, 0, 1, half);
-		addArcIn(splitDirections, radius.hi, 0.0, 1, 2, width - half);
+		double split[6];
+		std::copy_n(ends, 2, split);
+		std::tie(split[2], split[3]) = turned(directions[2 * i], directions[2 * i + 1], half);
+		std::copy_n(ends + 2, 2, split + 4);
+		addArcIn(split, radius.lo, 0, 1, half - startTurn);
+		addArcIn(split, radius.hi, 1, 2, width - half + endTurn);
 	});
 	// The box once the corners are known (min and max in any order).
 	if (box)

@@ -37,8 +37,8 @@ constexpr long kIncidenceSpan = 2;
  * surface) it stops growing. */
 constexpr double kMaxMarginStretch = 3.0;
 /** The vacuous bands are outlined and left out of the visit when they hold
- * at least this many cells: their two outlines (with two edges a band along
- * the strips) and spans cost about as much as finding 10,000 to 15,000 cells
+ * at least this many cells: below it, long thin bands (far beams beside near
+ * ones) cost more in their two outlines' row spans than their cells found
  * vacuous one by one (doc/performance-history.md). */
 constexpr double kMinVacuousCells = 20000.0;
 /** The free margin along sector s's beam, given each sector's nearest
@@ -392,17 +392,14 @@ CPolarToCartesian::TRows CPolarToCartesian::prepareRows(const GridGeometry& grid
 				return limit < HUGE_VAL ? limit : std::max(m_reach[lo], m_reach[hi]);
 			};
 		};
-		// The strips along the centre lines go to the visit: past each
-		// band's far end (and the outer outline's chords) in the inner one.
-		const auto strips = [this](std::size_t lo, std::size_t hi) {
-			const VacuousBand band = vacuousBand(lo, hi);
-			return band.to2 > band.from2 ? 1.001 * std::sqrt(band.to2) : 0.0;
-		};
-		outline(
+		// A cell within the arctangent's slack of a centre line may be mixed
+		// as either gap's: the outlines' steps there are turned off the line
+		// (as a split is), so that beside it only the ranges both gaps' bands
+		// hold are left out (the farther near end to the nearer far end).
+		outline<true>(
 			m_vacuousOuter, nullptr, *m_polar, m_sensor, m_directions, false, bandEnd(true));
-		outline(
-			m_vacuousInner, nullptr, *m_polar, m_sensor, m_directions, true, bandEnd(false),
-			strips);
+		outline<true>(
+			m_vacuousInner, nullptr, *m_polar, m_sensor, m_directions, true, bandEnd(false));
 		m_vacuousOuterSpans.fill(m_vacuousOuter, grid, first, last);
 		m_vacuousInnerSpans.fill(m_vacuousInner, grid, first, last);
 		m_vacuousSpans.assignDifference(m_vacuousOuterSpans, m_vacuousInnerSpans);
