@@ -384,8 +384,9 @@ CPolarToCartesian::TRows CPolarToCartesian::prepareRows(const GridGeometry& grid
 		// outlines' corners then stay near the bands' near ends, instead of
 		// running to the sensor and crossing every row near it.
 		const auto bandEnd = [this](bool far) {
-			return [this, far](std::size_t lo, std::size_t hi, std::size_t) {
-				const VacuousBand band = vacuousBand(lo, hi);
+			return [this, far](std::size_t lo, std::size_t hi, std::size_t i) {
+				// setup() found each gap's band for its mix.
+				const VacuousBand& band = m_gapMixes[i].vacuous;
 				if (band.to2 > band.from2) return std::sqrt(far ? band.to2 : band.from2);
 				const SectorSpan &a = m_sectorSpans[lo], &b = m_sectorSpans[hi];
 				const double limit = std::min(a.freeLimit, b.freeLimit);
