@@ -75,6 +75,31 @@ TEST(GridStorage, GrowthKeepsCellsInPlace)
 	EXPECT_EQ(s.geometry().xMin, before.xMin);
 }
 
+TEST(GridStorage, GrowthNearTheBudgetGivesUpTheMarginFirst)
+{
+	// 10 x 10 cells of 0.1 m in a budget of 200: the box to x = 1.5 m with
+	// 1 m of margin would make 25 x 10 cells, with half of it 20 x 10.
+	EvidentialGridStorage s;
+	s.reset(0.0, 1.0, 0.0, 1.0, 0.1, 200);
+	s.beginInsertion(0.0);
+	ASSERT_TRUE(s.growToInclude(0.0, 1.5, 0.2, 0.8, 1.0, 200));
+	const GridGeometry& g = s.geometry();
+	EXPECT_GE(g.xMax(), 1.5 - 1e-9);  // the box is held
+	EXPECT_LE(g.cellCount(), 200u);
+	EXPECT_NEAR(g.xMax(), 2.0, 1e-9);  // with the margin that fits
+	EXPECT_EQ(g.sizeY, 10);  // the sides that did not need to grow stay
+
+	// A margin that fits is kept whole.
+	EvidentialGridStorage roomy;
+	roomy.reset(0.0, 1.0, 0.0, 1.0, 0.1, 10'000);
+	ASSERT_TRUE(roomy.growToInclude(0.0, 1.5, 0.2, 0.8, 1.0, 10'000));
+	EXPECT_NEAR(roomy.geometry().xMax(), 2.5, 1e-9);
+
+	// Without any margin still too large: refused, nothing changes.
+	EXPECT_FALSE(s.growToInclude(0.0, 2.5, 0.2, 0.8, 1.0, 200));
+	EXPECT_LE(s.geometry().xMax(), 2.0);
+}
+
 TEST(GridStorage, GrowthAlongAPathMovesTheCellsAFewTimesOnly)
 {
 	// A grid that grows 0.5 m at a time, 400 times to the east and now and

@@ -280,6 +280,9 @@ TEST(MapIni, InvalidValuesAreRejectedNamingKeyAndValue)
 		{"creationOpts", "resolution=2e6"},
 		{"creationOpts", "min_x=-2e9"},
 		{"creationOpts", "max_y=1e10"},
+		// Valid alone, but more than 1e7 range bins of the grid's 0.10 m
+		// cells: refused when read, not at the first scan.
+		{"insertOpts", "maxRange=2e6"},
 	};
 	for (const auto& [section, line] : bad)
 	{

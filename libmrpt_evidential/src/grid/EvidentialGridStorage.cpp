@@ -87,21 +87,26 @@ bool EvidentialGridStorage::growToInclude(
 	const auto cellsFor = [res](double length) {
 		return GridGeometry::cellsToCover(length, res);
 	};
-	const double addLeft = growLeft ? cellsFor(g.xMin - xMin + margin) : 0;
-	const double addRight = growRight ? cellsFor(xMax - g.xMax() + margin) : 0;
-	const double addDown = growDown ? cellsFor(g.yMin - yMin + margin) : 0;
-	const double addUp = growUp ? cellsFor(yMax - g.yMax() + margin) : 0;
-	const double sx = g.sizeX + addLeft + addRight;
-	const double sy = g.sizeY + addDown + addUp;
-	if (sx * sy > static_cast<double>(maxCells) ||
-		std::max(sx, sy) > std::numeric_limits<int>::max())
-		return false;
+	double addLeft = 0, addRight = 0, addDown = 0, addUp = 0, sx = 0, sy = 0;
+	const auto fitsWith = [&](double m) {
+		addLeft = growLeft ? cellsFor(g.xMin - xMin + m) : 0;
+		addRight = growRight ? cellsFor(xMax - g.xMax() + m) : 0;
+		addDown = growDown ? cellsFor(g.yMin - yMin + m) : 0;
+		addUp = growUp ? cellsFor(yMax - g.yMax() + m) : 0;
+		sx = g.sizeX + addLeft + addRight, sy = g.sizeY + addDown + addUp;
+		const double x0 = g.xMin - addLeft * res, y0 = g.yMin - addDown * res;
+		return sx * sy <= static_cast<double>(maxCells) &&
+			std::max(sx, sy) <= std::numeric_limits<int>::max() &&
+			GridGeometry::withinLimits(x0, x0 + sx * res, y0, y0 + sy * res, res);
+	};
+	// Near the budget (or the limits) the margin gives way before the
+	// growth does, halved down to none: the scan is then held whole.
+	bool marginFits = fitsWith(margin);
+	for (double m = margin / 2; !marginFits && m >= res; m /= 2) marginFits = fitsWith(m);
+	if (!marginFits && !fitsWith(0.0)) return false;
 	GridGeometry grown{
 		g.xMin - addLeft * res, g.yMin - addDown * res, res, static_cast<int>(sx),
 		static_cast<int>(sy)};
-	if (!GridGeometry::withinLimits(
-			grown.xMin, grown.xMax(), grown.yMin, grown.yMax(), res))
-		return false;
 
 	// The room kept around the cells, in cells on each side.
 	const auto stride = static_cast<double>(g.stride());

@@ -70,6 +70,11 @@ void CEvidentialGridMap2D::TMapDefinition::loadFromConfigFile_map_specific(
 	}
 
 	insertionOpts.loadFromConfigFile(source, sectionNamePrefix + "_insertOpts");
+	// The polar grid's rules at this grid's cells (its bins are as long):
+	// a maxRange too long for them fails here, not at the first scan.
+	detail::throwIfInvalid(
+		source, sectionNamePrefix + "_insertOpts",
+		insertionOpts.sourceGridOptions(resolution).firstInvalid());
 	likelihoodOpts.loadFromConfigFile(
 		source, sectionNamePrefix + "_likelihoodOpts");
 	renderingOpts.loadFromConfigFile(source, sectionNamePrefix + "_renderOpts");

@@ -32,8 +32,12 @@ std::pair<int, int> latticeOffset(const GridGeometry& mine, const GridGeometry& 
 			detail::shortestText(mine.yMin) + ") and of " +
 			detail::shortestText(other.resolution) + " m from (" +
 			detail::shortestText(other.xMin) + ", " + detail::shortestText(other.yMin) +
-			")" + (sameResolution ? ": their origins are not a whole number of cells apart"
-								  : ": other resolutions (resample one first)"));
+			")" +
+			(sameResolution
+				 ? ": their origins are not a whole number of cells apart (build the runs "
+				   "with the same creationOpts min_x and min_y)"
+				 : ": other resolutions (build the runs with the same creationOpts "
+				   "resolution)"));
 	return {static_cast<int>(std::lround(fx)), static_cast<int>(std::lround(fy))};
 }
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -25,9 +26,12 @@ std::optional<TInvalidOption> TSourceGridOptions::firstInvalid() const
 		return TInvalidOption{"binSize", "a finite number > 0 (m)", binSize};
 	if (!(freeMargin >= 0.0 && std::isfinite(freeMargin)))
 		return TInvalidOption{"freeMargin", "a finite number >= 0 (m)", freeMargin};
-	if (maxRange / binSize > 1e7)
-		return TInvalidOption{
-			"maxRange", "at most 1e7 range bins long (maxRange / bin size)", maxRange};
+	if (const double bins = maxRange / binSize; bins > 1e7)
+	{
+		std::ostringstream rule;
+		rule << "at most 1e7 range bins long (" << bins << " bins of " << binSize << " m)";
+		return TInvalidOption{"maxRange", rule.str(), maxRange};
+	}
 	return std::nullopt;
 }
 

@@ -89,9 +89,11 @@ class EvidentialGridStorage
 	 * never written costs nothing), and grows into that
 	 * room later without moving: geometry()'s firstIndex and rowStride then
 	 * change, and the indices of the cells with them.
-	 * \return false (and leaves the grid as it is) if the grown grid would
-	 *  exceed `maxCells` cells or GridGeometry's limits, or a bound is not
-	 *  finite. */
+	 * Where the margin would take the grid past `maxCells` cells or
+	 * GridGeometry's limits, it is halved until the grid fits, down to none.
+	 * \return false (and leaves the grid as it is) if even without a margin
+	 *  the grown grid would exceed `maxCells` cells or GridGeometry's
+	 *  limits, or a bound is not finite. */
 	bool growToInclude(
 		double xMin, double xMax, double yMin, double yMax, double margin,
 		std::size_t maxCells);
