@@ -181,7 +181,7 @@ void CEvidentialGridMap2D::saveAsROSMap(const std::string& prefix) const
 		os << "image: "
 		   << yamlScalar(std::filesystem::path(pgmPath).filename().string())
 		   << "\nresolution: " << detail::shortestText(g.resolution) << "\norigin: ["
-		   << detail::shortestText(g.xMin) << ", " << detail::shortestText(g.yMin)
+		   << detail::metresText(g.xMin) << ", " << detail::metresText(g.yMin)
 		   << ", 0.0]\nnegate: 0\noccupied_thresh: "
 		   << detail::shortestText(kRosOccupiedThresh)
 		   << "\nfree_thresh: " << detail::shortestText(kRosFreeThresh) << "\n";
