@@ -128,10 +128,17 @@ TEST(Growth, StopsAtTheCellBudgetWithOneWarning)
 	EXPECT_GT(largest, 10'000u);  // it did grow while it could
 	EXPECT_EQ(occurrences(err, "maxCells"), 1u) << err;
 	EXPECT_TRUE(mapIsValid(map));
-	// Scans within the grid still go in.
+	// Each scan that could not be held whole is counted (500 m and on).
+	const std::size_t partly = map.partlyInsertedCount();
+	EXPECT_GE(partly, 3u);
+	EXPECT_LT(partly, 7u);
+	// Scans within the grid still go in, whole.
 	const auto counts = map.countDecisions();
 	ASSERT_TRUE(map.insertObservation(wall(2.0), CPose3D(0, 0, 0, M_PI, 0, 0)));
 	EXPECT_GT(map.countDecisions().free, counts.free);
+	EXPECT_EQ(map.partlyInsertedCount(), partly);
+	map.clear();
+	EXPECT_EQ(map.partlyInsertedCount(), 0u);
 }
 
 TEST(Growth, RandomWalkAwayNeverExceedsTheBudget)

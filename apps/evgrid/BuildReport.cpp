@@ -121,8 +121,11 @@ void writeSummary(
 	writeProducts(os, options.growth, run);
 	os << "\nmap:\n"
 	   << map.geometryText("  ") << "  insertions: " << map.insertionCount()
-	   << "\n"
-	   << "  latest time: " << std::fixed << std::setprecision(6)
+	   << "\n";
+	if (map.partlyInsertedCount() > 0)
+		os << "  partly inserted: " << map.partlyInsertedCount()
+		   << " (beyond what maxCells lets the grid grow to: used where they overlap it)\n";
+	os << "  latest time: " << std::fixed << std::setprecision(6)
 	   << map.latestTime() << " s\n";
 	printDecisionCounts(os, run.decisions, map.geometry().cellCount());
 	printMotionCounts(os, map);
@@ -153,6 +156,10 @@ void printConsoleSummary(
 	   << mrpt_evidential::detail::shortestText(map.getResolution()) << " m; free " << d.free
 	   << ", occupied " << d.occupied << ", unknown " << d.unknown
 	   << ", conflict " << d.conflict << "\n";
+	if (map.partlyInsertedCount() > 0)
+		os << "warning: " << map.partlyInsertedCount()
+		   << " scans reached beyond the cell budget (creationOpts maxCells) and were "
+			  "used only where they overlap the grid\n";
 	printMotionCounts(os, map);
 	os << "pictures: ";
 	const char* separator = "";

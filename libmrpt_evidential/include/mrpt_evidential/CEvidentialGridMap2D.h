@@ -178,6 +178,12 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	double latestTime() const { return m_grid.latestTime(); }
 	/** Number of observations inserted since the last clear(). */
 	std::size_t insertionCount() const { return m_grid.insertionCount(); }
+	/** Observations this map object fused only in part: their reach lay
+	 * beyond what `maxCells` (or 1e9 m of the origin) lets the grid grow to,
+	 * so they were fused where they overlap the grid (a warning says so
+	 * once). Counted since the map was made, read or cleared; not stored in
+	 * map files. */
+	std::size_t partlyInsertedCount() const { return m_partlyInserted; }
 	/** The cells, for loops that read them all (decay not applied: use
 	 * storage().read(); geometry().forEachIndex() walks the indices, which a
 	 * grown grid spaces out between rows). */
@@ -426,8 +432,10 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 
 	EvidentialGridStorage m_grid;
 	std::size_t m_maxCells = kDefaultMaxCells;
-	/** The cell-budget and tilted-scan messages are printed once per map. */
-	bool m_budgetWarningShown = false, m_tiltNoticeShown = false;
+	/** The tilted-scan message is printed once per map, the cell-budget
+	 * one at the first partly inserted observation. */
+	bool m_tiltNoticeShown = false;
+	std::size_t m_partlyInserted = 0;  //!< partlyInsertedCount()
 
 	/** What the map keeps beside its cells, not part of its value: the
 	 * insertion's scratch space (a scan's polar grid and its transform) and

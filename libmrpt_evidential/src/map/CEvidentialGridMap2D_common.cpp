@@ -166,6 +166,7 @@ void CEvidentialGridMap2D::internal_clear()
 {
 	const GridGeometry g = geometry();
 	m_grid.reset(g.xMin, g.xMax(), g.yMin, g.yMax(), g.resolution, m_maxCells);
+	m_partlyInserted = 0;
 	invalidateLikelihoodCache();
 }
 

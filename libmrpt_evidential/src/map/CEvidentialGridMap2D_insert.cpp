@@ -83,9 +83,8 @@ void CEvidentialGridMap2D::fusePolarGrid(
 	if (!m_grid.growToInclude(
 			box.xMin, box.xMax, box.yMin, box.yMax, insertionOptions.growthMargin,
 			m_maxCells) &&
-		!m_budgetWarningShown)
+		++m_partlyInserted == 1)
 	{
-		m_budgetWarningShown = true;
 		std::cerr << "[CEvidentialGridMap2D] warning: the grid cannot grow to "
 					 "hold a scan at ("
 				  << sensor.x << ", " << sensor.y << ") within its budget of "

@@ -391,6 +391,7 @@ void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 
 	// Commit: nothing below can fail (maxCells > 0 was checked).
 	m_grid = std::move(grid);
+	m_partlyInserted = 0;
 	setMaxCells(static_cast<std::size_t>(maxCells));
 	insertionOptions = io;
 	likelihoodOptions = lo;
