@@ -36,4 +36,11 @@ frames=$(cd "$out/frames" && ls)
 [ "$frames" = "$(printf 'frame_%06d_map.png\n' 100 200)" ] ||
   fail "frames after the rerun: $frames"
 [ -z "$(find "$out" -name '.evgrid-build-*')" ] || fail "temporary folder left in $out"
+# A grid at its cell budget: the scans it could hold only in part are counted,
+# on the console and in the summary (and a run within the budget says nothing).
+sed 's/^maxCells=.*/maxCells=500000/' "$EVGRID_INI" >"$T/budget.ini"
+run 0 "$EVGRID" build -i "$SENA" -c "$T/budget.ini" -o "$T/budget"
+contains "$OUT" "scans reached beyond the cell budget (creationOpts maxCells)"
+contains "$T/budget/summary.txt" "  partly inserted: "
+lacks "$out/summary.txt" "partly inserted"
 echo "evgrid_growth: OK"
