@@ -60,12 +60,14 @@ void forEachGap(const CPolarSourceGrid& polar, Fn&& fn)
  * `OffCentreLines`: the step between two gaps of different radii is turned
  * off their centre line by kCentreLineSlack as a split is, so that within
  * the slack of the line the region holds only the smaller radius (inside)
- * or the larger one (outside); otherwise the step lies on the line. */
+ * or the larger one (outside); otherwise the step lies on the line, and
+ * `radii` (work memory the caller keeps from scan to scan) holds each gap's
+ * radius, which the steps of both its ends read. */
 template <bool OffCentreLines = false, typename RadiusOf>
 void outline(
 	std::vector<double>& polygon, Box* box, const CPolarSourceGrid& polar,
 	const PlanarSensorPose& sensor, const std::vector<double>& directions,
-	bool outside, RadiusOf radiusOf)
+	bool outside, RadiusOf radiusOf, std::vector<TGapRadius>* radii = nullptr)
 {
 	polygon.clear();
 	const auto addPoint = [&](double x, double y) {
@@ -114,20 +116,19 @@ void outline(
 	const bool fullTurn = polar.fullTurn();
 	// Off the centre lines: each gap's radii first, then each line's turn
 	// (0, or the slack towards the gap after it or before it).
-	std::vector<TGapRadius> radii;
 	if constexpr (OffCentreLines)
 	{
-		radii.assign(n + 1, TGapRadius(0.0));
+		radii->assign(n + 1, TGapRadius(0.0));
 		forEachGap(polar, [&](std::size_t lo, std::size_t hi, std::size_t i, double) {
-			radii[i] = radiusOf(lo, hi, i);
+			(*radii)[i] = radiusOf(lo, hi, i);
 		});
 	}
 	const auto turnAt = [&](std::size_t line) {
 		if constexpr (!OffCentreLines) return 0.0;
 		if (fullTurn && line == n + 1) line = 1;  // centre 0 again
 		if (!fullTurn && (line == 0 || line == n + 1)) return 0.0;  // the span's ends
-		const double before = radii[fullTurn && line == 1 ? n : line - 1].hi,
-					 after = radii[line].lo;
+		const double before = (*radii)[fullTurn && line == 1 ? n : line - 1].hi,
+					 after = (*radii)[line].lo;
 		if (before == after) return 0.0;
 		return (before < after) != outside ? kCentreLineSlack : -kCentreLineSlack;
 	};
@@ -155,7 +156,7 @@ void outline(
 	forEachGap(polar, [&](std::size_t lo, std::size_t hi, std::size_t i, double width) {
 		TGapRadius radius(0.0);
 		if constexpr (OffCentreLines)
-			radius = radii[i];
+			radius = (*radii)[i];
 		else
 			radius = radiusOf(lo, hi, i);
 		// The gap's start and end: its lines' own directions, or turned.

@@ -398,9 +398,11 @@ CPolarToCartesian::TRows CPolarToCartesian::prepareRows(const GridGeometry& grid
 		// (as a split is), so that beside it only the ranges both gaps' bands
 		// hold are left out (the farther near end to the nearer far end).
 		outline<true>(
-			m_vacuousOuter, nullptr, *m_polar, m_sensor, m_directions, false, bandEnd(true));
+			m_vacuousOuter, nullptr, *m_polar, m_sensor, m_directions, false, bandEnd(true),
+			&m_bandRadii);
 		outline<true>(
-			m_vacuousInner, nullptr, *m_polar, m_sensor, m_directions, true, bandEnd(false));
+			m_vacuousInner, nullptr, *m_polar, m_sensor, m_directions, true, bandEnd(false),
+			&m_bandRadii);
 		m_vacuousOuterSpans.fill(m_vacuousOuter, grid, first, last);
 		m_vacuousInnerSpans.fill(m_vacuousInner, grid, first, last);
 		m_vacuousSpans.assignDifference(m_vacuousOuterSpans, m_vacuousInnerSpans);

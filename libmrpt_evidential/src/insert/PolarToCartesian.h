@@ -402,6 +402,9 @@ class CPolarToCartesian
 	/** The informed and the uniform outlines' radii over each gap, by its
 	 * entry among the directions (setup()'s scratch). */
 	std::vector<detail::TGapRadius> m_informedRadii, m_uniformRadii;
+	/** The vacuous bands' outlines' radii over each gap (prepareRows()'s
+	 * scratch). */
+	std::vector<detail::TGapRadius> m_bandRadii;
 	/** Outlines of the informed and of the uniform regions (x, y pairs), and
 	 * the world directions of their corners. */
 	std::vector<double> m_polygon, m_uniformPolygon, m_directions;
