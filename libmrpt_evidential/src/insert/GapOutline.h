@@ -60,9 +60,10 @@ void forEachGap(const CPolarSourceGrid& polar, Fn&& fn)
  * `OffCentreLines`: the step between two gaps of different radii is turned
  * off their centre line by kCentreLineSlack as a split is, so that within
  * the slack of the line the region holds only the smaller radius (inside)
- * or the larger one (outside); otherwise the step lies on the line, and
- * `radii` (work memory the caller keeps from scan to scan) holds each gap's
- * radius, which the steps of both its ends read. */
+ * or the larger one (outside); otherwise the step lies on the line. An
+ * outline off the centre lines keeps each gap's radius in `radii` (work
+ * memory the caller keeps from scan to scan), where the steps at both of
+ * the gap's ends read it. */
 template <bool OffCentreLines = false, typename RadiusOf>
 void outline(
 	std::vector<double>& polygon, Box* box, const CPolarSourceGrid& polar,
