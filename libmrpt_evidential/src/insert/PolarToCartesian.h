@@ -238,7 +238,8 @@ class CPolarToCartesian
 		std::vector<int> columns;
 		std::vector<double> crossingX;  //!< fill()'s work array
 		/** Polygon edges that cross a row: rows [row0, row1) from `first`,
-		 * x at row0 and its change per row. */
+		 * x at row0 and its change per row, in columns (0 at the first
+		 * column's centre). */
 		struct Edge
 		{
 			int row0, row1;

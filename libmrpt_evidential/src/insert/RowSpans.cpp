@@ -88,9 +88,11 @@ MRPT_EVIDENTIAL_CPU_CLONES void CPolarToCartesian::RowSpans::fill(
 		const double x0 = polygon[2 * lo], y0 = polygon[2 * lo + 1];
 		const double slope = (polygon[2 * hi] - x0) / (polygon[2 * hi + 1] - y0);
 		const int r0 = vertexRow[lo];
+		// x in columns (from the first column's centre, in cells): the
+		// crossings then round to their columns as they are.
 		edges.push_back(
 			{r0 - first, vertexRow[hi] - first,
-			 x0 + (grid.cellCenterY(r0) - y0) * slope, slope * res});
+			 (x0 + (grid.cellCenterY(r0) - y0) * slope - grid.xMin) * invRes - 0.5, slope});
 	}
 	// Each row's count of crossings from the edges' ends alone (+1 where an
 	// edge begins, -1 past its last row: unsigned wrap-around cancels out),
@@ -121,6 +123,7 @@ MRPT_EVIDENTIAL_CPU_CLONES void CPolarToCartesian::RowSpans::fill(
 	// At most a span for each two crossings, written in place.
 	if (columns.size() < start[nRows]) columns.resize(start[nRows]);
 	int* out = columns.data();
+	const double lastColumn = grid.sizeX - 1;
 	std::size_t from = 0;
 	for (std::size_t k = 0; k < nRows; ++k)
 	{
@@ -129,10 +132,10 @@ MRPT_EVIDENTIAL_CPU_CLONES void CPolarToCartesian::RowSpans::fill(
 		start[k] = static_cast<std::size_t>(out - columns.data());
 		for (std::size_t c = from; c + 1 < to; c += 2)
 		{
-			const int c0 = detail::clampToInt(
-				std::ceil((xs[c] - grid.xMin) * invRes - 0.5), 0, grid.sizeX);
-			const int c1 = detail::clampToInt(
-				std::floor((xs[c + 1] - grid.xMin) * invRes - 0.5), -1, grid.sizeX - 1);
+			const int c0 =
+				static_cast<int>(std::min(lastColumn + 1, std::max(0.0, std::ceil(xs[c]))));
+			const int c1 =
+				static_cast<int>(std::min(lastColumn, std::max(-1.0, std::floor(xs[c + 1]))));
 			out[0] = c0;
 			out[1] = c1;
 			out += c0 <= c1 ? 2 : 0;
