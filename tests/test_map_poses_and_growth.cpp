@@ -139,6 +139,11 @@ TEST(Growth, StopsAtTheCellBudgetWithOneWarning)
 	EXPECT_EQ(map.partlyInsertedCount(), partly);
 	map.clear();
 	EXPECT_EQ(map.partlyInsertedCount(), 0u);
+	// A grid made anew by setSize() starts its count again too.
+	ASSERT_TRUE(map.insertObservation(wall(), CPose3D(5e5, 0, 0, 0, 0, 0)));
+	EXPECT_EQ(map.partlyInsertedCount(), 1u);
+	map.setSize(-1.0, 1.0, -1.0, 1.0, 0.1);
+	EXPECT_EQ(map.partlyInsertedCount(), 0u);
 }
 
 TEST(Growth, RandomWalkAwayNeverExceedsTheBudget)

@@ -181,8 +181,8 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	/** Observations this map object fused only in part: their reach lay
 	 * beyond what `maxCells` (or 1e9 m of the origin) lets the grid grow to,
 	 * so they were fused where they overlap the grid (a warning says so
-	 * once). Counted since the map was made, read or cleared; not stored in
-	 * map files. */
+	 * once). Counted since the map was made, read, cleared or resized
+	 * (setSize()); not stored in map files. */
 	std::size_t partlyInsertedCount() const { return m_partlyInserted; }
 	/** The cells, for loops that read them all (decay not applied: use
 	 * storage().read(); geometry().forEachIndex() walks the indices, which a

@@ -149,6 +149,7 @@ void CEvidentialGridMap2D::setSize(
 	double min_x, double max_x, double min_y, double max_y, double resolution)
 {
 	m_grid.reset(min_x, max_x, min_y, max_y, resolution, m_maxCells);
+	m_partlyInserted = 0;
 	invalidateLikelihoodCache();
 }
 
@@ -165,9 +166,7 @@ void CEvidentialGridMap2D::setMaxCells(std::size_t maxCells)
 void CEvidentialGridMap2D::internal_clear()
 {
 	const GridGeometry g = geometry();
-	m_grid.reset(g.xMin, g.xMax(), g.yMin, g.yMax(), g.resolution, m_maxCells);
-	m_partlyInserted = 0;
-	invalidateLikelihoodCache();
+	setSize(g.xMin, g.xMax(), g.yMin, g.yMax(), g.resolution);
 }
 
 bool CEvidentialGridMap2D::isEmpty() const { return insertionCount() == 0; }

@@ -80,10 +80,9 @@ void CEvidentialGridMap2D::fusePolarGrid(
 	transform.setup(polar, sensor);
 	const Box& box = transform.box();
 	if (box.empty()) return;
-	if (!m_grid.growToInclude(
-			box.xMin, box.xMax, box.yMin, box.yMax, insertionOptions.growthMargin,
-			m_maxCells) &&
-		++m_partlyInserted == 1)
+	const bool whole = m_grid.growToInclude(
+		box.xMin, box.xMax, box.yMin, box.yMax, insertionOptions.growthMargin, m_maxCells);
+	if (!whole && ++m_partlyInserted == 1)
 	{
 		std::cerr << "[CEvidentialGridMap2D] warning: the grid cannot grow to "
 					 "hold a scan at ("
