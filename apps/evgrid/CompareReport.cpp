@@ -140,6 +140,10 @@ void printReport(
 	   << "static map: MRPT's " << a.mrptCells
 	   << " cells, ours read at their centres (getCellDecision)\n";
 	printTally(os, "occupied", kMrptOccupiedBelow, "<", a.mrptOccupied);
+	if (a.mrptOccupied.total() > 0)
+		os << "    occupied in ours within one cell (the cell or a neighbour): "
+		   << a.mrptOccupiedNearOurs << "  "
+		   << percent(a.mrptOccupiedNearOurs, a.mrptOccupied.total()) << "%\n";
 	printTally(os, "free", kMrptFreeAbove, ">", a.mrptFree);
 	os << "  MRPT neither: " << a.mrptUncertain
 	   << " cells (never seen, or not certain enough)\n\n";
@@ -178,6 +182,9 @@ void writeKeyValues(
 			   << prefix << "_ours_" << row.name << "_pct "
 			   << percent(tally->*row.count, tally->total()) << "\n";
 	}
+	os << "mrpt_occupied_near_ours_occupied " << a.mrptOccupiedNearOurs << "\n"
+	   << "mrpt_occupied_near_ours_occupied_pct "
+	   << percent(a.mrptOccupiedNearOurs, a.mrptOccupied.total()) << "\n";
 	for (const auto& [prefix, score] :
 		 {std::pair{"ours", &run.ours}, std::pair{"mrpt", &run.mrpt}})
 		os << prefix << "_localization_scans " << score->scans << "\n"

@@ -23,6 +23,18 @@ void add(TDecisionTally& tally, Decision d)
 	}
 	++tally.unknown;
 }
+
+/** Whether ours calls a neighbour of the cell at (x, y) occupied. */
+bool occupiedAround(
+	const mrpt_evidential::CEvidentialGridMap2D& ours, double x, double y, double step)
+{
+	for (int dy = -1; dy <= 1; ++dy)
+		for (int dx = -1; dx <= 1; ++dx)
+			if ((dx != 0 || dy != 0) &&
+				ours.getCellDecision(x + dx * step, y + dy * step) == Decision::Occupied)
+				return true;
+	return false;
+}
 }  // namespace
 
 TMapAgreement compareCells(
@@ -47,9 +59,12 @@ TMapAgreement compareCells(
 				++result.mrptUncertain;
 				continue;
 			}
-			add(*tally,
-				ours.getCellDecision(
-					mrpt.idx2x(static_cast<std::size_t>(cx)), y));
+			const double x = mrpt.idx2x(static_cast<std::size_t>(cx));
+			const Decision d = ours.getCellDecision(x, y);
+			add(*tally, d);
+			if (tally == &result.mrptOccupied &&
+				(d == Decision::Occupied || occupiedAround(ours, x, y, mrpt.getResolution())))
+				++result.mrptOccupiedNearOurs;
 		}
 	}
 	return result;

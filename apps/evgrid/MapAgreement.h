@@ -34,10 +34,16 @@ struct TMapAgreement
 	std::size_t mrptCells = 0, mrptUncertain = 0;
 	/** Our decisions at the centres of MRPT's occupied and free cells. */
 	TDecisionTally mrptOccupied, mrptFree;
+	/** MRPT's occupied cells that ours calls occupied at their centre or
+	 * at the centre of one of their eight neighbours: a wall both maps hold,
+	 * in rows a cell apart where the poses' error moved it between visits. */
+	std::size_t mrptOccupiedNearOurs = 0;
 };
 
 /** Visits every cell of `mrpt` and, for its occupied and free ones, reads
- * `ours`' getCellDecision() at the cell's centre (Unknown outside ours). */
+ * `ours`' getCellDecision() at the cell's centre (Unknown outside ours);
+ * for an occupied one that ours does not call occupied, also at its eight
+ * neighbours' centres. */
 TMapAgreement compareCells(
 	const mrpt::maps::COccupancyGridMap2D& mrpt,
 	const mrpt_evidential::CEvidentialGridMap2D& ours);
