@@ -1,6 +1,7 @@
 # evgrid compare: our map against MRPT's occupancy grid on the simulated room
-# with its true poses and on MRPT's Malaga simplemap. Checks the report's
-# numbers add up, that MRPT's grid localizes the held-out scans of the room,
+# with its true poses, on MRPT's Malaga simplemap and on SENA along its
+# odometry. Checks the report's numbers add up, that MRPT's grid localizes the
+# held-out scans of the room, what the count of walls within one cell reads,
 # that --output holds the numbers stdout shows and is written atomically, and
 # the usage errors.
 source "$(dirname "$0")/lib.sh"
@@ -86,6 +87,10 @@ awk '{ exit !($1 + $2 >= 85) }' <<<"$(value mrpt_occupied_ours_occupied_pct "$T/
   fail "our map sees few of MRPT's occupied cells as occupied or conflict"
 awk '{ exit !($1 < 10) }' <<<"$(value mrpt_free_ours_occupied_pct "$T/room.txt")" ||
   fail "our map calls many of MRPT's free cells occupied"
+# Every occupied cell of MRPT's is occupied in ours within one cell (all
+# 1717 when measured).
+awk '{ exit !($1 >= 99) }' <<<"$(value mrpt_occupied_near_ours_occupied_pct "$T/room.txt")" ||
+  fail "our map has few of MRPT's occupied cells within one cell"
 # The same run gives the same numbers.
 run 0 "$EVGRID" compare -q -c "$EVGRID_INI" -i "$room" -p "$gt" --output "$T/again.txt"
 [ ! -s "$OUT" ] || fail "--quiet printed the report"
@@ -120,6 +125,19 @@ contains "$T/malaga.stdout" "poses: the simplemap's"
 # one cell (98.5 % when measured, 92.9 % at their very centre).
 awk '{ exit !($1 >= 95) }' <<<"$(value mrpt_occupied_near_ours_occupied_pct "$T/malaga.txt")" ||
   fail "Malaga: $(value mrpt_occupied_near_ours_occupied_pct "$T/malaga.txt")% of MRPT's occupied cells near ours'"
+
+#    SENA along its odometry, which drifts by metres: walls seen twice a
+#    cell or more apart. The count within one cell lies strictly between the
+#    count at the centre and all of MRPT's occupied cells (75.6 % and 84.5 %
+#    when measured): it reads the neighbours, and only those ours calls
+#    occupied.
+run 0 "$EVGRID" compare -c "$EVGRID_INI" -i "$SENA" --output "$T/sena.txt"
+cp "$OUT" "$T/sena.stdout"
+check_report "$T/sena.txt" "$T/sena.stdout"
+near=$(value mrpt_occupied_near_ours_occupied "$T/sena.txt")
+[ "$(value mrpt_occupied_ours_occupied "$T/sena.txt")" -lt "$near" ] &&
+  [ "$near" -lt "$(value mrpt_occupied_cells "$T/sena.txt")" ] ||
+  fail "SENA: $near of MRPT's occupied cells near ours' is not between the two counts"
 
 # 4. Nothing to share: every range 16 m longer, beyond MRPT's 15 m insertion
 #    limit, leaves its grid without an occupied cell; on that empty grid every
