@@ -146,7 +146,7 @@ std::unique_ptr<CEvidentialGridMap2D> ourMap(
 	io.sensorModel = o.model;
 	io.fusionRule = o.rule;
 	io.imprecision = o.model == SensorModel::ImpreciseMultiEcho ? resolution : 0.0;
-	io.decayRate = o.decay ? 0.01 : 0.0;
+	io.decayRate = !o.decay ? 0.0 : o.decayRate > 0 ? o.decayRate : 0.01;
 	io.maxRange = range;
 	if (o.muF > 0) io.muF = o.muF;
 	if (o.muO > 0) io.muO = o.muO;

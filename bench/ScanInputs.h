@@ -52,7 +52,9 @@ struct OurOptions
 	mrpt_evidential::SensorModel model = mrpt_evidential::SensorModel::ReinforcedMultiEcho;
 	mrpt_evidential::FusionRule rule = mrpt_evidential::FusionRule::Conjunctive;
 	bool decay = true;
-	double maxRange = 0, muF = 0, muO = 0, sectorWidthDegrees = 0;
+	/** 0: each case's own (the kind's maxRange, the map's masses, 0.01/s
+	 * decay, one sector a beam). */
+	double maxRange = 0, muF = 0, muO = 0, sectorWidthDegrees = 0, decayRate = 0;
 	unsigned threads = 1;
 	mrpt_evidential::ConflictHandling handling = mrpt_evidential::ConflictHandling::Normalize;
 };

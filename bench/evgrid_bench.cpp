@@ -185,7 +185,8 @@ void add(const std::string& caseName, Fn fn, Timing timing)
 
 /** The settings users change (issue 15), one at a time, against MRPT's grid
  * with widening beams and the same maxRange: SENA's real scans (returns up to
- * 80 m) for maxRange, the stock scan for the masses and the sector width. */
+ * 80 m) for maxRange, the stock scan for the masses and the sector width;
+ * then the issue's own example of them together. */
 struct SweepCase
 {
 	std::string setting;
@@ -225,6 +226,10 @@ const std::vector<SweepCase>& sweepCases()
 			std::snprintf(name, sizeof(name), "sector%.2gdeg", degrees);
 			out.push_back({name, ScanKind::Stock, o});
 		}
+		// Issue 15's own example of common settings, all at once.
+		OurOptions o;
+		o.maxRange = 30.0, o.decayRate = 0.05, o.muF = 0.6, o.muO = 0.85;
+		out.push_back({"maxRange30-decay0.05-muF0.6-muO0.85", ScanKind::Stock, o});
 		return out;
 	}();
 	return cases;
