@@ -15,8 +15,9 @@ using mrpt_evidential::CEvidentialGridMap2D;
 namespace evgrid
 {
 CSideBySideMaps::CSideBySideMaps(
-	std::unique_ptr<CEvidentialGridMap2D> ours, int holdout,
-	const CInputWalker& input)
+	std::unique_ptr<CEvidentialGridMap2D> ours,
+	const std::optional<mrpt::maps::COccupancyGridMap2D::TMapDefinition>& mrptOptions,
+	int holdout, const CInputWalker& input)
 	: m_ours(std::move(ours)),
 	  m_mrpt(
 		  static_cast<float>(m_ours->getXMin()),
@@ -27,6 +28,11 @@ CSideBySideMaps::CSideBySideMaps(
 	  m_holdout(holdout),
 	  m_input(input)
 {
+	if (mrptOptions)
+	{
+		m_mrpt.insertionOptions = mrptOptions->insertionOpts;
+		m_mrpt.likelihoodOptions = mrptOptions->likelihoodOpts;
+	}
 }
 
 void CSideBySideMaps::offer(

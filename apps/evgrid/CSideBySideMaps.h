@@ -37,11 +37,14 @@ struct TSideBySideCounts
 class CSideBySideMaps
 {
    public:
-	/** MRPT's grid starts with the extent and resolution of `ours` and its
-	 * default insertion and likelihood options; both grow as scans reach
-	 * beyond them. `holdout` >= 2. `input` names the scan in errors. */
+	/** MRPT's grid starts with the extent and resolution of `ours`, and the
+	 * insertion and likelihood options of `mrptOptions` (its resolution
+	 * aside: the cells are compared one to one), or MRPT's defaults without
+	 * it; both grow as scans reach beyond them. `holdout` >= 2. `input`
+	 * names the scan in errors. */
 	CSideBySideMaps(
 		std::unique_ptr<mrpt_evidential::CEvidentialGridMap2D> ours,
+		const std::optional<mrpt::maps::COccupancyGridMap2D::TMapDefinition>& mrptOptions,
 		int holdout, const CInputWalker& input);
 
 	/** Holds the scan out if it is the N-th with a pose, else inserts it into

@@ -14,6 +14,7 @@
 #include "CompareReport.h"
 #include "Commands.h"
 #include "InputOptions.h"
+#include "MapFiles.h"
 #include "MapOutputs.h"
 
 namespace evgrid
@@ -25,8 +26,9 @@ std::optional<int> parseOptions(
 {
 	TCLAP::CmdLine cmd(
 		"Builds, from one input, our evidential grid (settings from the .ini) "
-		"and MRPT's COccupancyGridMap2D (its default options, the same "
-		"resolution) side by side, inserting the same scans at the same "
+		"and MRPT's COccupancyGridMap2D (the insertion and likelihood options "
+		"of the .ini's occupancyGrid if it lists one, else MRPT's defaults; our "
+		"map's resolution) side by side, inserting the same scans at the same "
 		"poses, and reports (1) how our map's decisions agree with MRPT's "
 		"occupied (getCell < 0.4) and free (getCell > 0.6) cells, and (2) the "
 		"localization hit rate of each map on the scans held out of both. "
@@ -54,9 +56,18 @@ void compare(const TCompareOptions& options)
 	if (!options.report.output.empty())
 		checkOutputFile(options.report.output);
 	auto ours = createMap(options.source);
+	// MRPT's grid as the same .ini configures it for icp-slam and the other
+	// programs, when it lists one.
+	const auto mrptOptions = options.source.config.empty()
+		? std::nullopt
+		: occupancyGridFromConfig(options.source.config, options.source.section);
+	TCompareRecord run;
+	run.mrptOptions = mrptOptions
+		? "the .ini's first occupancyGrid (its insertOpts and likelihoodOpts; our map's cells)"
+		: "MRPT's defaults";
 	CPoseSource poses = createPoseSource(options.source);
 	CInputWalker input(options.source.input, poses);
-	CSideBySideMaps maps(std::move(ours), options.holdout, input);
+	CSideBySideMaps maps(std::move(ours), mrptOptions, options.holdout, input);
 
 	const auto mode = CProgress::modeFor(options.report.quiet);
 	CProgress building(mode, std::string(kCompareName) + " (maps)");
@@ -82,7 +93,6 @@ void compare(const TCompareOptions& options)
 			std::to_string(n.mrptInserted) + notInsertedAccount(input.counts()) + ")");
 	maps.finish();
 
-	TCompareRecord run;
 	run.poses = poses.description();
 	run.agreement = compareCells(maps.mrpt(), maps.ours());
 	CProgress localizing(mode, std::string(kCompareName) + " (localization)");

@@ -127,6 +127,7 @@ void printReport(
 	   << "input: " << options.source.input << "\n"
 	   << "poses: " << run.poses << "\n"
 	   << "config: " << configDescription(options.source) << "\n"
+	   << "MRPT's options: " << run.mrptOptions << "\n"
 	   << "scans: " << n.total << " 2-D scans: " << n.withoutPose
 	   << " without a pose, " << n.heldOut << " held out, " << n.offered
 	   << " given to both maps (ours took " << n.oursInserted << ", MRPT "
@@ -159,6 +160,7 @@ void writeKeyValues(
 	os << "input " << options.source.input << "\n"
 	   << "poses " << run.poses << "\n"
 	   << "config " << configDescription(options.source) << "\n"
+	   << "mrpt_options " << run.mrptOptions << "\n"
 	   << "holdout " << options.holdout << "\n"
 	   << "resolution " << shortestText(maps.ours().getResolution()) << "\n"
 	   << "scans_total " << n.total << "\n"

@@ -16,6 +16,8 @@ struct TCompareRecord
 {
 	/** CPoseSource::description() */
 	std::string poses;
+	/** Where MRPT's grid took its insertion and likelihood options. */
+	std::string mrptOptions;
 	TMapAgreement agreement;
 	TLocalizationScore ours, mrpt;
 };

@@ -19,7 +19,12 @@ using mrpt_evidential::CEvidentialGridMap2D;
 
 namespace evgrid
 {
-std::unique_ptr<CEvidentialGridMap2D> createMapFromConfig(
+namespace
+{
+/** The maps a CMultiMetricMap would create from `section` of `iniPath`.
+ * \throws std::runtime_error naming the file if it cannot be read or has no
+ *  such section. */
+mrpt::maps::TSetOfMetricMapInitializers readInitializers(
 	const std::string& iniPath, const std::string& section)
 {
 	// CConfigFile reads a missing file as an empty one: check first.
@@ -41,7 +46,15 @@ std::unique_ptr<CEvidentialGridMap2D> createMapFromConfig(
 	{
 		throw std::runtime_error(iniPath + ": " + describe(e));
 	}
+	return initializers;
+}
+}  // namespace
 
+std::unique_ptr<CEvidentialGridMap2D> createMapFromConfig(
+	const std::string& iniPath, const std::string& section)
+{
+	const mrpt::maps::TSetOfMetricMapInitializers initializers =
+		readInitializers(iniPath, section);
 	for (const auto& init : initializers)
 	{
 		const auto* definition =
@@ -63,6 +76,17 @@ std::unique_ptr<CEvidentialGridMap2D> createMapFromConfig(
 		"the sections [" +
 		section + "_evidentialGrid_00_creationOpts], _insertOpts, "
 				  "_likelihoodOpts)");
+}
+
+std::optional<mrpt::maps::COccupancyGridMap2D::TMapDefinition> occupancyGridFromConfig(
+	const std::string& iniPath, const std::string& section)
+{
+	for (const auto& init : readInitializers(iniPath, section))
+		if (const auto* definition =
+				dynamic_cast<const mrpt::maps::COccupancyGridMap2D::TMapDefinition*>(
+					init.get()))
+			return *definition;
+	return std::nullopt;
 }
 
 CEvidentialGridMap2D::Ptr loadMap(const std::string& path)

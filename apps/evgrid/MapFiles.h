@@ -1,9 +1,11 @@
 /* evgrid: creating a map from an .ini file, and reading and saving map files. */
 #pragma once
 
+#include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace evgrid
@@ -18,6 +20,14 @@ constexpr const char* kDefaultSection = "MappingApplication";
  * ignored. \throws std::runtime_error naming the file if it cannot be read,
  *  a value is invalid, or it creates no evidential grid. */
 std::unique_ptr<mrpt_evidential::CEvidentialGridMap2D> createMapFromConfig(
+	const std::string& iniPath, const std::string& section);
+
+/** The options of the first COccupancyGridMap2D that a CMultiMetricMap would
+ * create from the same section (`occupancyGrid_count` and the
+ * `<section>_occupancyGrid_00_*` sections), or nothing when it creates none.
+ * \throws std::runtime_error as createMapFromConfig() for a file it cannot
+ *  read. */
+std::optional<mrpt::maps::COccupancyGridMap2D::TMapDefinition> occupancyGridFromConfig(
 	const std::string& iniPath, const std::string& section);
 
 /** Reads a map saved by `evgrid build` or by saveMetricMapRepresentationToFile

@@ -2,6 +2,7 @@
 # with its true poses, on MRPT's Malaga simplemap and on SENA along its
 # odometry. Checks the report's numbers add up, that MRPT's grid localizes the
 # held-out scans of the room, what the count of walls within one cell reads,
+# that MRPT's grid takes its options from the .ini when it lists one,
 # that --output holds the numbers stdout shows and is written atomically, and
 # the usage errors.
 source "$(dirname "$0")/lib.sh"
@@ -95,6 +96,22 @@ awk '{ exit !($1 >= 99) }' <<<"$(value mrpt_occupied_near_ours_occupied_pct "$T/
 run 0 "$EVGRID" compare -q -c "$EVGRID_INI" -i "$room" -p "$gt" --output "$T/again.txt"
 [ ! -s "$OUT" ] || fail "--quiet printed the report"
 cmp -s "$T/room.txt" "$T/again.txt" || fail "a second run wrote other numbers"
+# MRPT's grid takes MRPT's defaults unless the .ini lists an occupancyGrid
+# too (as icp-slam's do): then its insertion and likelihood options, at our
+# map's cells. Inserting up to 2 m instead of MRPT's default 15 m leaves it
+# fewer occupied cells; its own resolution (0.25 m) is not used.
+contains "$T/room.stdout" "MRPT's options: MRPT's defaults"
+[ "$(value mrpt_options "$T/room.txt")" = "MRPT's defaults" ] || fail "not MRPT's defaults"
+sed 's/^evidentialGrid_count=1$/&\noccupancyGrid_count=1/' "$EVGRID_INI" >"$T/both.ini"
+printf '%s\n' "[MappingApplication_occupancyGrid_00_creationOpts]" "resolution=0.25" \
+  "[MappingApplication_occupancyGrid_00_insertOpts]" "maxDistanceInsertion=2" >>"$T/both.ini"
+run 0 "$EVGRID" compare -c "$T/both.ini" -i "$room" -p "$gt" --poses-format time --output "$T/both.txt"
+cp "$OUT" "$T/both.stdout"
+check_report "$T/both.txt" "$T/both.stdout"
+contains "$T/both.stdout" "MRPT's options: the .ini's first occupancyGrid (its insertOpts and likelihoodOpts; our map's cells)"
+contains "$T/both.stdout" "grids (cells of 0.05 m)"
+[ "$(value mrpt_occupied_cells "$T/both.txt")" -lt "$(value mrpt_occupied_cells "$T/room.txt")" ] ||
+  fail "MRPT's grid did not take the .ini's maxDistanceInsertion"
 
 # 2. A failed run leaves the earlier file as it was, and no temporary file.
 mkdir "$T/kept"
