@@ -1,5 +1,5 @@
-/* evgrid-bench: whole runs: the grid's growth along long paths, and SENA's
- * whole log. */
+/* evgrid-bench: whole runs: the grid's growth along long paths, and the
+ * whole logs of mrpt-common. */
 
 #include "RunCases.h"
 
@@ -119,16 +119,17 @@ void ourPath(benchmark::State& state, const TPath& path, bool presized)
 	pathLoop(state, *map, path);
 }
 
-/** SENA's whole run along its odometry into a grid of 20 x 20 m that grows,
+/** A log's whole run along its path into a grid of 20 x 20 m that grows,
  * as a user builds the map of a log: ours with the map's defaults (those of
  * rawlogs/evgrid.ini: imprecise model, maxRange 20 m, no decay, motion
- * layer), MRPT's with its own and the same range. Each pass over the 224
- * scans starts a fresh map (made and dropped outside the timing), so that
- * the runs' growth and first writes to new ground are timed scan by scan. */
+ * layer), MRPT's with its own and the same range. Each pass over the log
+ * starts a fresh map (made and dropped outside the timing), so that the
+ * runs' growth and first writes to new ground are timed scan by scan. */
 template <typename Map>
-void runLoop(benchmark::State& state, const std::function<std::unique_ptr<Map>()>& make)
+void runLoop(
+	benchmark::State& state, RunLog log, const std::function<std::unique_ptr<Map>()>& make)
 {
-	const std::vector<TRunStep>& run = senaRun();
+	const std::vector<TRunStep>& run = runOf(log);
 	std::unique_ptr<Map> map = make();
 	std::size_t i = 0;
 	for (auto _ : state)
@@ -146,24 +147,28 @@ void runLoop(benchmark::State& state, const std::function<std::unique_ptr<Map>()
 }
 constexpr double kRunRange = 20.0;
 
-void ourRun(benchmark::State& state)
+void ourRun(benchmark::State& state, RunLog log)
 {
-	runLoop<CEvidentialGridMap2D>(state, [] {
+	runLoop<CEvidentialGridMap2D>(state, log, [] {
 		auto map = std::make_unique<CEvidentialGridMap2D>(-10.0, 10.0, -10.0, 10.0, 0.05);
 		map->insertionOptions.maxRange = kRunRange;
 		return map;
 	});
 }
 
-void mrptRun(benchmark::State& state, bool widening)
+void mrptRun(benchmark::State& state, RunLog log, bool widening)
 {
-	runLoop<mrpt::maps::COccupancyGridMap2D>(state, [widening] {
+	runLoop<mrpt::maps::COccupancyGridMap2D>(state, log, [widening] {
 		auto map = std::make_unique<mrpt::maps::COccupancyGridMap2D>(-10.0, 10.0, -10.0, 10.0, 0.05);
 		map->insertionOptions.maxDistanceInsertion = static_cast<float>(kRunRange);
 		map->insertionOptions.wideningBeamsWithDistance = widening;
 		return map;
 	});
 }
+
+/** "senarun": a log's run in the cases' names (SENA's name kept from before
+ * the other logs came). */
+std::string runName(RunLog log) { return std::string(name(log)) + "run"; }
 }  // namespace
 
 void registerRunCases()
@@ -177,11 +182,16 @@ void registerRunCases()
 			addCase("ours/" + at, [=](benchmark::State& s) { ourPath(s, path, presized); },
 				Timing::WholePath);
 		}
-	addCase("mrpt/senarun/plain/0.05m", [](benchmark::State& s) { mrptRun(s, false); },
-		Timing::WholePath);
-	addCase("mrpt/senarun/widening/0.05m", [](benchmark::State& s) { mrptRun(s, true); },
-		Timing::WholePath);
-	addCase("ours/senarun/growing/0.05m", ourRun, Timing::WholePath);
+	for (const RunLog log : runLogs())
+	{
+		const std::string run = runName(log);
+		addCase("mrpt/" + run + "/plain/0.05m",
+			[log](benchmark::State& s) { mrptRun(s, log, false); }, Timing::WholePath);
+		addCase("mrpt/" + run + "/widening/0.05m",
+			[log](benchmark::State& s) { mrptRun(s, log, true); }, Timing::WholePath);
+		addCase("ours/" + run + "/growing/0.05m", [log](benchmark::State& s) { ourRun(s, log); },
+			Timing::WholePath);
+	}
 }
 
 void printRunRatios(const std::map<std::string, double>& microseconds)
@@ -199,10 +209,13 @@ void printRunRatios(const std::map<std::string, double>& microseconds)
 			   "ours/diagonalpath/growing/stock/0.05m", "ours/diagonalpath/presized/stock/0.05m", 1.1);
 	print("500 m diagonal, growing grid vs MRPT's growing",
 			   "ours/diagonalpath/growing/stock/0.05m", "mrpt/diagonalpath/growing/stock/0.05m", 1.0);
-	print("SENA's run along its odometry (map defaults) vs widening",
-			   "ours/senarun/growing/0.05m", "mrpt/senarun/widening/0.05m", 1.0);
-	print("SENA's run along its odometry (map defaults) vs plain",
-			   "ours/senarun/growing/0.05m", "mrpt/senarun/plain/0.05m", 2.0);
+	for (const RunLog log : runLogs())
+	{
+		const std::string run = runName(log), ours = "ours/" + run + "/growing/0.05m",
+						  what = std::string(name(log)) + "'s whole run (map defaults) vs ";
+		print(what + "widening", ours, "mrpt/" + run + "/widening/0.05m", 1.0);
+		print(what + "plain", ours, "mrpt/" + run + "/plain/0.05m", 2.0);
+	}
 	print("500 m spiral, growing vs presized grid",
 			   "ours/spiralpath/growing/stock/0.05m", "ours/spiralpath/presized/stock/0.05m", 1.1);
 	print("500 m spiral, growing grid vs MRPT's growing",

@@ -1,6 +1,6 @@
 /* evgrid-bench: whole runs (issue 15): stock scans along long paths from a
  * small grid that grows, against a grid that holds the path from the start,
- * and SENA's whole log along its odometry, ours and MRPT's grid. */
+ * and whole logs of mrpt-common along their paths, ours and MRPT's grid. */
 #pragma once
 
 #include "Cases.h"
@@ -10,7 +10,7 @@
 
 namespace bench
 {
-/** Registers the paths' and SENA's runs. */
+/** Registers the paths' and the logs' runs. */
 void registerRunCases();
 /** Their ratios, from the microseconds per case. */
 void printRunRatios(const std::map<std::string, double>& microseconds);

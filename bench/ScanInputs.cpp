@@ -4,7 +4,9 @@
 
 #include <mrpt/core/Clock.h>
 #include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/maps/CSimpleMap.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CRawlog.h>
 #include <mrpt/obs/stock_observations.h>
 #include <mrpt/poses/CPose2D.h>
@@ -15,6 +17,7 @@
 #include <cstdio>
 #include <map>
 #include <random>
+#include <stdexcept>
 
 #include "../tests/support/scans.h"
 
@@ -61,36 +64,96 @@ const std::vector<CObservation2DRangeScan>& scans(ScanKind kind)
 		}));
 	}
 	else
-		for (const TRunStep& step : senaRun()) out.push_back(step.scan);
+		for (const TRunStep& step : runOf(RunLog::Sena)) out.push_back(step.scan);
 	return out;
 }
 
-const std::vector<TRunStep>& senaRun()
+const char* name(RunLog log)
 {
-	static const std::vector<TRunStep> run = [] {
-		std::vector<TRunStep> out;
-		mrpt::io::CFileGZInputStream file(
-			std::string(MRPT_DATASETS_DIR) +
-			"/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog");
-		auto archive = mrpt::serialization::archiveFrom(file);
-		mrpt::obs::CActionCollection::Ptr actions;
-		mrpt::obs::CSensoryFrame::Ptr frame;
-		mrpt::obs::CObservation::Ptr obs;
-		std::size_t entry = 0;
-		mrpt::poses::CPose2D odometry;
-		while (mrpt::obs::CRawlog::getActionObservationPairOrObservation(
-			archive, actions, frame, obs, entry))
-		{
-			if (actions)
-				if (const auto move = actions->getBestMovementEstimation(); move && move->poseChange)
-					odometry = odometry + move->poseChange->getMeanVal();
-			if (frame)
-				for (const auto& o : *frame)
-					if (auto scan = std::dynamic_pointer_cast<CObservation2DRangeScan>(o))
-						out.push_back({*scan, CPose3D(odometry)});
-		}
-		return out;
-	}();
+	switch (log)
+	{
+		case RunLog::Sena: return "sena";
+		case RunLog::Malaga: return "malaga";
+		case RunLog::Localization: return "localization";
+		case RunLog::Simul: return "simul";
+	}
+	return "";
+}
+
+const std::vector<RunLog>& runLogs()
+{
+	static const std::vector<RunLog> all{
+		RunLog::Sena, RunLog::Malaga, RunLog::Localization, RunLog::Simul};
+	return all;
+}
+
+namespace
+{
+void appendScans(
+	const mrpt::obs::CSensoryFrame& frame, const CPose3D& pose, std::vector<TRunStep>& out)
+{
+	for (const auto& o : frame)
+		if (const auto scan = std::dynamic_pointer_cast<CObservation2DRangeScan>(o))
+			out.push_back({*scan, pose});
+}
+
+std::vector<TRunStep> rawlogRun(const std::string& path)
+{
+	std::vector<TRunStep> out;
+	mrpt::io::CFileGZInputStream file(path);
+	auto archive = mrpt::serialization::archiveFrom(file);
+	mrpt::obs::CActionCollection::Ptr actions;
+	mrpt::obs::CSensoryFrame::Ptr frame;
+	mrpt::obs::CObservation::Ptr obs;
+	std::size_t entry = 0;
+	mrpt::poses::CPose2D odometry;
+	while (mrpt::obs::CRawlog::getActionObservationPairOrObservation(
+		archive, actions, frame, obs, entry))
+	{
+		if (actions)
+			if (const auto move = actions->getBestMovementEstimation(); move && move->poseChange)
+				odometry = odometry + move->poseChange->getMeanVal();
+		if (frame) appendScans(*frame, CPose3D(odometry), out);
+		if (const auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(obs))
+			odometry = odo->odometry;
+		else if (const auto scan = std::dynamic_pointer_cast<CObservation2DRangeScan>(obs))
+			out.push_back({*scan, CPose3D(odometry)});
+	}
+	return out;
+}
+
+std::vector<TRunStep> simplemapRun(const std::string& path)
+{
+	std::vector<TRunStep> out;
+	mrpt::maps::CSimpleMap simplemap;
+	mrpt::io::CFileGZInputStream file(path);
+	mrpt::serialization::archiveFrom(file) >> simplemap;
+	for (const auto& keyframe : simplemap)
+		if (keyframe.sf && keyframe.pose)
+			appendScans(*keyframe.sf, keyframe.pose->getMeanVal(), out);
+	return out;
+}
+}  // namespace
+
+const std::vector<TRunStep>& runOf(RunLog log)
+{
+	static std::map<RunLog, std::vector<TRunStep>> cache;
+	auto& run = cache[log];
+	if (!run.empty()) return run;
+	const std::string dir = MRPT_DATASETS_DIR;
+	switch (log)
+	{
+		case RunLog::Sena:
+			run = rawlogRun(dir + "/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog");
+			break;
+		case RunLog::Malaga: run = simplemapRun(dir + "/malaga-cs-fac-building.simplemap.gz"); break;
+		case RunLog::Localization: run = rawlogRun(dir + "/localization_demo.rawlog"); break;
+		case RunLog::Simul:
+			run = rawlogRun(dir + "/graphslam-engine-demos/action_observations_map/simul.rawlog");
+			break;
+	}
+	if (run.empty())
+		throw std::runtime_error(std::string("no 2-D scans in the log of run ") + name(log));
 	return run;
 }
 

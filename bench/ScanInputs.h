@@ -68,9 +68,24 @@ struct TRunStep
 	mrpt::obs::CObservation2DRangeScan scan;
 	mrpt::poses::CPose3D pose;
 };
-/** SENA's scans along the robot's path as its odometry has it: a whole run,
- * as a user builds a map of it. */
-const std::vector<TRunStep>& senaRun();
+/** The logs of mrpt-common whose whole runs the bench times: SENA (225
+ * scans, a building's halls), Malaga's simplemap (99 keyframes, corridors
+ * and offices), the localization demo's rawlog (37 scans, small rooms: the
+ * smallest scans) and graphslam-engine's simul.rawlog (1733 simulated scans
+ * of a large building). */
+enum class RunLog
+{
+	Sena,
+	Malaga,
+	Localization,
+	Simul
+};
+const char* name(RunLog log);
+/** Every RunLog. */
+const std::vector<RunLog>& runLogs();
+/** A log's scans along the robot's path, as a user builds a map of it: a
+ * rawlog's odometry, a simplemap's keyframe poses. */
+const std::vector<TRunStep>& runOf(RunLog log);
 
 /** "stock/0.05m": a case's kind and resolution in its name. */
 std::string label(ScanKind kind, double resolution);
