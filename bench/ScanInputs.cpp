@@ -38,9 +38,27 @@ const char* name(ScanKind k)
 		case ScanKind::Stock: return "stock";
 		case ScanKind::Sena: return "sena";
 		case ScanKind::Wide: return "wide";
+		case ScanKind::SenaOneDegree: return "sena1deg";
 	}
 	return "";
 }
+
+namespace
+{
+/** The scan's beams 0, 2, 4, ... over the same aperture. */
+CObservation2DRangeScan everyOtherBeam(const CObservation2DRangeScan& scan)
+{
+	CObservation2DRangeScan out = scan;
+	const std::size_t n = (scan.getScanSize() + 1) / 2;
+	out.resizeScan(n);
+	for (std::size_t i = 0; i < n; ++i)
+	{
+		out.setScanRange(i, scan.getScanRange(2 * i));
+		out.setScanRangeValidity(i, scan.getScanRangeValidity(2 * i));
+	}
+	return out;
+}
+}  // namespace
 
 const std::vector<CObservation2DRangeScan>& scans(ScanKind kind)
 {
@@ -63,6 +81,8 @@ const std::vector<CObservation2DRangeScan>& scans(ScanKind kind)
 			return std::min({tx, ty, 29.9});
 		}));
 	}
+	else if (kind == ScanKind::SenaOneDegree)
+		for (const TRunStep& step : runOf(RunLog::Sena)) out.push_back(everyOtherBeam(step.scan));
 	else
 		for (const TRunStep& step : runOf(RunLog::Sena)) out.push_back(step.scan);
 	return out;

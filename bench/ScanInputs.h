@@ -22,7 +22,11 @@ enum class ScanKind
 {
 	Stock,	//!< MRPT's example scan: 361 rays over 180 degrees
 	Sena,  //!< the SENA rawlog's real scans, in turn
-	Wide  //!< synthetic: 1081 rays over 270 degrees, ranges up to 30 m
+	Wide,  //!< synthetic: 1081 rays over 270 degrees, ranges up to 30 m
+	/** SENA's scans with every other beam: 181 rays at 1 degree, as the SICK
+	 * scanners of many public logs are set (issue 15's held-out logs have
+	 * 180 to 361 rays); the sectors are twice as wide at every range. */
+	SenaOneDegree
 };
 const char* name(ScanKind k);
 

@@ -185,7 +185,8 @@ void add(const std::string& caseName, Fn fn, Timing timing)
 
 /** The settings users change (issue 15), one at a time, against MRPT's grid
  * with widening beams and the same maxRange: SENA's real scans (returns up to
- * 80 m) for maxRange, the stock scan for the masses and the sector width;
+ * 80 m) for maxRange, as they are and with every other beam (a scanner of 1
+ * degree), the stock scan for the masses and the sector width;
  * then the issue's own example of them together. */
 struct SweepCase
 {
@@ -202,6 +203,7 @@ const std::vector<SweepCase>& sweepCases()
 			OurOptions o;
 			o.maxRange = range;
 			out.push_back({"maxRange" + std::to_string(int(range)), ScanKind::Sena, o});
+			out.push_back({"maxRange" + std::to_string(int(range)), ScanKind::SenaOneDegree, o});
 		}
 		for (const auto& [muF, muO] : {std::pair{0.6, 0.85}, std::pair{0.9, 0.98}})
 		{
