@@ -264,6 +264,9 @@ TEST(MapIni, InvalidValuesAreRejectedNamingKeyAndValue)
 		{"creationOpts", "min_y=5\nmax_y=5"},
 		{"creationOpts", "maxCells=0"},
 		{"creationOpts", "maxCells=-3"},
+		// More than a saved map may hold (it could not be read back).
+		{"creationOpts", "maxCells=2e9"},
+		{"creationOpts", "maxCells=1000000001"},
 		// Values that only their own text names faithfully.
 		{"insertOpts", "muO=-1e-9"},
 		{"insertOpts", "muF=nan"},
@@ -369,7 +372,11 @@ TEST(BadOptions, InvalidGeometryIsRejected)
 	CEvidentialGridMap2D map = smallMap();
 	EXPECT_THROW(map.setMaxCells(0), std::invalid_argument);
 	EXPECT_THROW(map.setMaxCells(9'999), std::invalid_argument);
+	// A saved map holds at most 1e9 cells: a map given more could not be read.
+	EXPECT_THROW(map.setMaxCells(1'000'000'001), std::invalid_argument);
 	EXPECT_EQ(map.maxCells(), CEvidentialGridMap2D::kDefaultMaxCells);
+	map.setMaxCells(1'000'000'000);
+	EXPECT_EQ(map.maxCells(), 1'000'000'000u);
 }
 
 TEST(BadOptions, WideLikelihoodMarginOnAThinMapAllocatesLittle)

@@ -104,8 +104,9 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 		double resolution);
 
 	/** Largest number of cells the grid may grow to when scans reach beyond
-	 * it. \throws std::invalid_argument if 0 or below the current number of
-	 * cells. */
+	 * it. \throws std::invalid_argument if 0, above 1e9
+	 *  (GridGeometry::kMaxCellBudget: a saved map holds no more) or below the
+	 *  current number of cells. */
 	void setMaxCells(std::size_t maxCells);
 	std::size_t maxCells() const { return m_maxCells; }
 
@@ -364,8 +365,8 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	MAP_DEFINITION_START(CEvidentialGridMap2D)
 	/** `[<prefix>_evidentialGrid_NN_creationOpts]`: min_x, max_x, min_y,
 	 * max_y (metres, min < max, within 1e9 m of the origin), resolution
-	 * (metres, 1e-6 to 1e6) and maxCells (cell budget for growth, > 0, at
-	 * least the cells of the initial grid). */
+	 * (metres, 1e-6 to 1e6) and maxCells (cell budget for growth, 1 to 1e9,
+	 * at least the cells of the initial grid). */
 	double min_x = -10.0, max_x = 10.0, min_y = -10.0, max_y = 10.0,
 		   resolution = 0.10;
 	std::size_t maxCells = CEvidentialGridMap2D::kDefaultMaxCells;

@@ -24,7 +24,8 @@ std::optional<TInvalidOption> GridGeometry::firstInvalid(
 	if (!(yMin < yMax))
 		return TInvalidOption{
 			"min_y", "below max_y (" + detail::shortestText(yMax) + ")", yMin};
-	if (maxCells == 0) return TInvalidOption{"maxCells", "> 0", 0.0};
+	if (maxCells == 0 || maxCells > kMaxCellBudget)
+		return TInvalidOption{"maxCells", "in [1, 1e9]", static_cast<double>(maxCells)};
 	const double sx = cellsToCover(xMax - xMin, resolution);
 	const double sy = cellsToCover(yMax - yMin, resolution);
 	if (sx * sy > static_cast<double>(maxCells) ||

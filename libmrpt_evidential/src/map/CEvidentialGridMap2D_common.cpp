@@ -58,7 +58,8 @@ void CEvidentialGridMap2D::TMapDefinition::loadFromConfigFile_map_specific(
 		};
 		std::string expected = "must be " + bad->rule;
 		// A grid over its budget: the keys that make it, as the file gives them.
-		if (bad->key == "maxCells" && maxCells > 0)
+		if (bad->key == "maxCells" && maxCells > 0 &&
+			maxCells <= GridGeometry::kMaxCellBudget)
 		{
 			expected += ":";
 			for (const auto& [key, value] :
@@ -155,9 +156,10 @@ void CEvidentialGridMap2D::setSize(
 
 void CEvidentialGridMap2D::setMaxCells(std::size_t maxCells)
 {
-	if (maxCells == 0 || maxCells < geometry().cellCount())
+	if (maxCells == 0 || maxCells > GridGeometry::kMaxCellBudget ||
+		maxCells < geometry().cellCount())
 		throw std::invalid_argument(
-			"maxCells must be > 0 and not below the grid's " +
+			"maxCells must be in [1, 1e9] and not below the grid's " +
 			std::to_string(geometry().cellCount()) + " cells, got " +
 			std::to_string(maxCells));
 	m_maxCells = maxCells;

@@ -42,9 +42,10 @@
  * instead of the normal part's. Both are read and converted.
  *   checksum     u64 FNV-1a (64 bit) of every byte above, header excluded
  * Enums are stored as their integer values; booleans as 0 or 1.
- * Reading refuses a budget above 10 x kDefaultMaxCells and a grid of more
- * cells than its budget, before allocating anything for it, and allocates
- * the cells of a larger grid than kCellsTrustedAhead as they arrive. */
+ * Reading refuses a budget above GridGeometry::kMaxCellBudget (as setting
+ * one does) and a grid of more cells than its budget, before allocating
+ * anything for it, and allocates the cells of a larger grid than
+ * kCellsTrustedAhead as they arrive. */
 
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
@@ -254,10 +255,10 @@ void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 	// size fails here rather than in a huge allocation.
 	// The budget governs later growth: a forged one must not let a scan
 	// allocate what no grid read from a file may hold.
-	if (maxCells == 0 || maxCells > kDefaultMaxCells * 10)
+	if (maxCells == 0 || maxCells > GridGeometry::kMaxCellBudget)
 		corrupted("a cell budget of " + std::to_string(maxCells));
 	if (g.sizeX < 1 || g.sizeY < 1) corrupted("an empty grid");
-	if (g.cellCount() > maxCells || g.cellCount() > kDefaultMaxCells * 10)
+	if (g.cellCount() > maxCells)
 		corrupted(
 			"a grid of " + std::to_string(g.sizeX) + " x " +
 			std::to_string(g.sizeY) + " cells, beyond the cell budget");

@@ -31,6 +31,9 @@ struct GridGeometry
 	 * cell centres lose their precision, and squared distances overflow. */
 	static constexpr double kMaxCoordinate = 1e9;
 	static constexpr double kMinResolution = 1e-6, kMaxResolution = 1e6;
+	/** Largest cell budget of any grid: 8 GB of cells. A map read from a
+	 * file must hold no more, so a map must never be given more. */
+	static constexpr std::size_t kMaxCellBudget = 1'000'000'000;
 	/** True when the bounds and resolution are within the limits (NaN is
 	 * not). */
 	static bool withinLimits(
@@ -47,7 +50,8 @@ struct GridGeometry
 	 * with cells of `resolution` metres within a budget of `maxCells` cells,
 	 * named by its .ini key (min_x, max_x, min_y, max_y, resolution,
 	 * maxCells): the resolution or a bound beyond the limits (NaN
-	 * included), min >= max, no budget, or more cells than the budget. */
+	 * included), min >= max, no budget or one above kMaxCellBudget, or more
+	 * cells than the budget. */
 	static std::optional<TInvalidOption> firstInvalid(
 		double xMin, double xMax, double yMin, double yMax, double resolution,
 		std::size_t maxCells);
