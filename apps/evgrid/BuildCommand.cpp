@@ -3,8 +3,9 @@
  * insertion, outputs, report. */
 
 #include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt_evidential/support/NumberText.h>
 
-#include <csignal>
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -26,6 +27,7 @@
 #include "MapFiles.h"
 #include "MapOutputs.h"
 #include "ScanInsertion.h"
+#include "StopSignal.h"
 
 using mrpt::poses::CPose3D;
 using mrpt_evidential::CEvidentialGridMap2D;
@@ -34,19 +36,6 @@ namespace evgrid
 {
 namespace
 {
-/** Set by SIGINT / SIGTERM: the run stops at the next entry and cleans up
- * its temporary files instead of dying with them in place. */
-volatile std::sig_atomic_t g_stopSignal = 0;
-void onStopSignal(int signal) { g_stopSignal = signal; }
-
-void throwIfStopRequested()
-{
-	if (g_stopSignal != 0)
-		throw std::runtime_error(
-			"interrupted by signal " + std::to_string(g_stopSignal) +
-			"; the output folder is unchanged");
-}
-
 std::string joinCommandLine(int argc, char** argv, int first)
 {
 	std::string s = kBuildName;
@@ -92,7 +81,8 @@ std::optional<int> parseOptions(
 	TCLAP::SwitchArg argQuiet(
 		"q", "quiet", "Print nothing but errors.", cmd, false);
 	TCLAP::ValueArg<double> argFps(
-		"", "animation-fps", "Frame rate of growth.avi. Default: 25.", false,
+		"", "animation-fps",
+		"Frame rate of growth.avi, a whole number from 1 to 1000. Default: 25.", false,
 		25.0, "FPS", cmd);
 	TCLAP::ValueArg<std::string> argAnimationSize(
 		"", "animation-size",
@@ -147,8 +137,13 @@ std::optional<int> parseOptions(
 		throw UsageError(
 			"--animation-size must be WIDTHxHEIGHT, each 16 to 8192 pixels, "
 			"got '" + argAnimationSize.getValue() + "'");
-	if (!(growth.animationFps > 0.0 && growth.animationFps <= 1000.0))
-		throw UsageError("--animation-fps must be in (0, 1000]");
+	// OpenCV's AVI writer takes whole rates only (it rounds, and refuses
+	// less than 1).
+	if (!(growth.animationFps >= 1.0 && growth.animationFps <= 1000.0 &&
+		  growth.animationFps == std::floor(growth.animationFps)))
+		throw UsageError(
+			"--animation-fps must be a whole number of frames per second, 1 to 1000, got " +
+			mrpt_evidential::detail::shortestText(growth.animationFps));
 	if (!growth.animation &&
 		(argAnimationEvery.isSet() || argAnimationSize.isSet() || argFps.isSet()))
 		throw UsageError(
@@ -256,7 +251,7 @@ void build(const TBuildOptions& options, SteadyClock::time_point start)
 	CGrowthRecorder growth(options.growth, out);
 	CScanInserter inserter(*map, input, growth);
 	input.walk(
-		{throwIfStopRequested,
+		{[] { throwIfStopRequested(); },
 		 [&inserter](const auto& scan, const auto& pose) {
 			 inserter.insert(scan, pose);
 		 },
@@ -277,9 +272,15 @@ void build(const TBuildOptions& options, SteadyClock::time_point start)
 			(inserter.clouds().total > 0
 				 ? "; " + scanAccount(inserter.clouds(), "3-D clouds")
 				 : std::string()) +
-			notInsertedAccount(input.counts()) + ")");
+			notInsertedAccount(input.counts()) +
+			// Which poses were asked for: a step-keyed file with a gap reads as
+			// time stamps under --poses-format auto, and no scan finds its time.
+			(inserter.scans().withoutPose + inserter.clouds().withoutPose > 0
+				 ? "; poses: " + poses.description()
+				 : std::string()) +
+			")");
 	}
-	growth.finish();
+	growth.finish(*map, inserter.inserted());
 
 	TBuildRecord run;
 	run.input = input.counts();
@@ -307,8 +308,7 @@ int runBuild(int argc, char** argv, int first)
 
 	// From here on temporary files exist: a stop request must let the run
 	// remove them.
-	std::signal(SIGINT, onStopSignal);
-	std::signal(SIGTERM, onStopSignal);
+	catchStopSignals();
 	build(options, start);
 	return 0;
 }

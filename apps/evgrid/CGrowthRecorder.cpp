@@ -53,18 +53,26 @@ void CGrowthRecorder::afterInsertion(
 			throw std::runtime_error(path + ": cannot write the picture");
 		++m_frames;
 	}
-	if (video)
-	{
-		map.getAsPicture(kMapPicture, picture, true, m_animation->width(), m_animation->height());
-		m_animation->add(picture);
-		++m_animationFrames;
-	}
+	if (video) addVideoFrame(map, inserted);
 }
 
-void CGrowthRecorder::finish()
+void CGrowthRecorder::addVideoFrame(
+	const mrpt_evidential::CEvidentialGridMap2D& map, std::size_t inserted)
+{
+	constexpr std::size_t kMapPicture = 0;
+	mrpt::img::CImage picture;
+	map.getAsPicture(kMapPicture, picture, true, m_animation->width(), m_animation->height());
+	m_animation->add(picture);
+	++m_animationFrames;
+	m_lastVideoFrameAt = inserted;
+}
+
+void CGrowthRecorder::finish(
+	const mrpt_evidential::CEvidentialGridMap2D& map, std::size_t inserted)
 {
 	if (!m_animation) return;
 	CScopedTimer t(m_writingSeconds);
+	if (m_animationFrames == 0 || m_lastVideoFrameAt != inserted) addVideoFrame(map, inserted);
 	m_animation->close();
 }
 

@@ -41,8 +41,11 @@ class CGrowthRecorder
 	 * map if a frame or a video frame is due. */
 	void afterInsertion(
 		const mrpt_evidential::CEvidentialGridMap2D& map, std::size_t inserted);
-	/** Finishes growth.avi. */
-	void finish();
+	/** Finishes growth.avi with the final map, `inserted` scans in, as its
+	 * last frame (unless afterInsertion() just recorded it): a video always
+	 * ends on the map the run writes, even with --animation-every beyond
+	 * the count of scans. */
+	void finish(const mrpt_evidential::CEvidentialGridMap2D& map, std::size_t inserted);
 
 	std::size_t frames() const { return m_frames; }
 	std::size_t animationFrames() const { return m_animationFrames; }
@@ -50,10 +53,14 @@ class CGrowthRecorder
 	double writingSeconds() const { return m_writingSeconds; }
 
    private:
+	void addVideoFrame(const mrpt_evidential::CEvidentialGridMap2D& map, std::size_t inserted);
+
 	TGrowthOptions m_options;
 	const COutputFolder& m_out;
 	std::optional<CGrowthAnimation> m_animation;
 	std::size_t m_frames = 0, m_animationFrames = 0;
+	/** The insertion count of the latest video frame. */
+	std::size_t m_lastVideoFrameAt = 0;
 	double m_writingSeconds = 0;
 };
 

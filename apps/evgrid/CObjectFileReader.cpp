@@ -102,10 +102,20 @@ CObjectFileReader::CObjectFileReader(const std::string& path)
 CObjectFileReader::CObjectFileReader(const std::string& path, Check)
 	: m_path(path)
 {
-	gzFile f = openGzipForReading(path);
+	// The input is read twice (checked in a child first), which a pipe's
+	// data cannot be: the second reading would find it empty.
+	namespace fs = std::filesystem;
 	std::error_code ec;
+	const fs::file_status status = fs::status(path, ec);
+	if (!ec && fs::exists(status) && !fs::is_regular_file(status) &&
+		!fs::is_directory(status))
+		throw std::runtime_error(
+			path +
+			": not a regular file (a pipe or a device); evgrid reads its input "
+			"twice, so save the data to a file first");
+	gzFile f = openGzipForReading(path);
 	m_archive = std::make_unique<CZlibArchive>(f);
-	m_fileSize = std::filesystem::file_size(path, ec);
+	m_fileSize = fs::file_size(path, ec);
 	if (ec) m_fileSize = 0;
 }
 
@@ -306,6 +316,9 @@ mrpt::serialization::CSerializable::Ptr CObjectFileReader::next()
 			fail(
 				"an object of a class evgrid does not know (" + cause +
 				"): written by a newer MRPT or needing another library?");
+		// Our map names itself when its own data are bad (a checksum, a
+		// budget): that is the reason, whichever entry it is.
+		if (cause.rfind("CEvidentialGridMap2D: ", 0) == 0) fail(cause);
 		// The first bytes of a file that is not MRPT's make a garbage
 		// header, and MRPT's complaint about it would only confuse.
 		if (m_entry == 0)

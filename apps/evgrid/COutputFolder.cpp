@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "StopSignal.h"
+
 namespace fs = std::filesystem;
 
 namespace evgrid
@@ -66,6 +68,8 @@ std::string COutputFolder::final(const std::string& name) const
 
 void COutputFolder::commit(const std::vector<std::string>& names)
 {
+	// Ctrl-C while the outputs were written: nothing moves into place.
+	throwIfStopRequested();
 	for (const std::string& name : names)
 	{
 		const std::string from = staged(name), to = final(name);

@@ -35,7 +35,8 @@ class COutputFolder
 	/** Moves the staged entries `names` into place, in that order (put the
 	 * file that marks a complete run last), then removes the staging folder.
 	 * Names not staged are skipped. \throws std::runtime_error naming the
-	 * entry that cannot be moved. */
+	 * entry that cannot be moved, or before moving any if a stop was
+	 * requested (throwIfStopRequested()). */
 	void commit(const std::vector<std::string>& names);
 
    private:

@@ -107,13 +107,22 @@ std::string describe(const std::exception& e)
 {
 	// MRPT exceptions read "==== MRPT exception ====\nMessage: ...\nLocation:
 	// ...\nCall stack backtrace: ...", nested ones repeated inside; the last
-	// "Message:" is the original cause.
+	// "Message:" is the original cause, unless an "Original exception:" line
+	// follows it with a plain exception's text (a class's deserializer that
+	// threw while MRPT read the object).
 	const std::string what = e.what();
 	std::istringstream lines(what);
 	std::string line, message;
+	const std::string tag = "Message:";
 	while (std::getline(lines, line))
 	{
-		const std::string tag = "Message:";
+		if (line == "Original exception:")
+		{
+			if (std::getline(lines, line) && !line.empty() &&
+				line.rfind("====", 0) != 0)
+				message = line;
+			continue;
+		}
 		if (line.compare(0, tag.size(), tag) != 0) continue;
 		const auto start = line.find_first_not_of(' ', tag.size());
 		if (start != std::string::npos) message = line.substr(start);

@@ -13,6 +13,7 @@
 #include "CommandLine.h"
 #include "Commands.h"
 #include "MapFiles.h"
+#include "StopSignal.h"
 
 using mrpt_evidential::CEvidentialGridMap2D;
 using mrpt_evidential::detail::writeFileAtomically;
@@ -83,9 +84,12 @@ int runDiff(int argc, char** argv, int first)
 	if (!(clearance >= 0.0 && clearance <= 10.0))
 		throw UsageError("--clearance must be in [0, 10], got " + mrpt_evidential::detail::shortestText(clearance));
 
+	catchStopSignals();
 	COutputFolder out(argOut.getValue());
 	const auto earlier = loadMap(earlierPath);
+	throwIfStopRequested();
 	const auto later = loadMap(laterPath);
+	throwIfStopRequested();
 	CEvidentialGridMap2D::TMapChanges changes;
 	try
 	{
@@ -96,6 +100,7 @@ int runDiff(int argc, char** argv, int first)
 		throw std::runtime_error(laterPath + ": " + e.what() + " (" + earlierPath + ")");
 	}
 
+	throwIfStopRequested();
 	mrpt::img::CImage img;
 	later->getAsChangesImage(changes, img, true);
 	if (!img.saveToFile(out.staged("changes.png")))

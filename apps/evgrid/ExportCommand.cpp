@@ -14,6 +14,7 @@
 #include "Commands.h"
 #include "MapFiles.h"
 #include "MapOutputs.h"
+#include "StopSignal.h"
 
 using mrpt_evidential::CEvidentialGridMap2D;
 using mrpt_evidential::detail::writeFileAtomicallyByName;
@@ -87,15 +88,29 @@ int runExport(int argc, char** argv, int first)
 	if (const auto exitCode = parse(cmd, kName, argc, argv, first))
 		return *exitCode;
 	requireMapFile(argMap.getValue());
+	if (argPath.isSet() && !argScene.isSet()) throw UsageError("--path needs --scene");
+	if (argBare.isSet() && !argPng.isSet()) throw UsageError("--bare needs --png");
 	if (!argPng.isSet() && !argGridmap.isSet() && !argRos.isSet() && !argScene.isSet())
 		throw UsageError("nothing to do: give --png, --gridmap, --ros and/or --scene");
 	for (auto* arg : {&argPng, &argGridmap, &argRos, &argScene, &argPath})
 		if (arg->isSet() && arg->getValue().empty())
 			throw UsageError("--" + arg->getName() + " needs a non-empty value");
-	if (argPath.isSet() && !argScene.isSet()) throw UsageError("--path needs --scene");
-	if (argBare.isSet() && !argPng.isSet()) throw UsageError("--bare needs --png");
 
+	// Each file is written whole under a temporary name and renamed: a stop
+	// request waits for the file being written, then ends the command.
+	catchStopSignals();
 	const auto map = loadMap(argMap.getValue());
+	std::vector<std::string> written;
+	bool anyWritten = false;
+	const auto stopIfRequested = [&] {
+		if (!argQuiet.getValue())
+			for (const auto& file : written) std::cout << "wrote " << file << "\n";
+		anyWritten = anyWritten || !written.empty();
+		written.clear();
+		throwIfStopRequested(
+			anyWritten ? "the files listed were written whole, the others left as they were"
+					   : "no file was written");
+	};
 	std::vector<mrpt::math::TPoint3D> path;
 	if (argPath.isSet())
 	{
@@ -106,28 +121,32 @@ int runExport(int argc, char** argv, int first)
 		if (arg->isSet())
 			createFolder(
 				std::filesystem::path(arg->getValue()).parent_path().string());
-	std::vector<std::string> written;
 	if (argPng.isSet())
+	{
+		stopIfRequested();
 		for (const auto& file : savePicturesIn(*map, argPng.getValue(), !argBare.getValue()))
 			written.push_back(file);
+	}
 	if (argGridmap.isSet())
 	{
+		stopIfRequested();
 		writeGridmap(*map, argGridmap.getValue());
 		written.push_back(argGridmap.getValue());
 	}
 	if (argRos.isSet())
 	{
+		stopIfRequested();
 		map->saveAsROSMap(argRos.getValue());
 		written.push_back(argRos.getValue() + ".pgm");
 		written.push_back(argRos.getValue() + ".yaml");
 	}
 	if (argScene.isSet())
 	{
+		stopIfRequested();
 		map->saveAsScene(argScene.getValue(), path);
 		written.push_back(argScene.getValue());
 	}
-	if (!argQuiet.getValue())
-		for (const auto& path : written) std::cout << "wrote " << path << "\n";
+	stopIfRequested();
 	return 0;
 }
 

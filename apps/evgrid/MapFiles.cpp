@@ -9,6 +9,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
@@ -27,7 +28,11 @@ namespace
 mrpt::maps::TSetOfMetricMapInitializers readInitializers(
 	const std::string& iniPath, const std::string& section)
 {
-	// CConfigFile reads a missing file as an empty one: check first.
+	// CConfigFile reads a missing file as an empty one, and fails on a
+	// folder with a bare allocation error: check first.
+	std::error_code ec;
+	if (std::filesystem::is_directory(iniPath, ec))
+		throw std::runtime_error(iniPath + ": is a directory, not a config file");
 	if (!std::ifstream(iniPath))
 		throw std::runtime_error(
 			iniPath + ": cannot open the config file: " + std::strerror(errno));
@@ -105,8 +110,16 @@ CEvidentialGridMap2D::Ptr loadMap(const std::string& path)
 void saveMap(const CEvidentialGridMap2D& map, const std::string& path)
 {
 	std::ofstream f(path, std::ios::binary);
-	auto archive = mrpt::serialization::archiveFrom<std::ostream>(f);
-	archive << map;
+	try
+	{
+		auto archive = mrpt::serialization::archiveFrom<std::ostream>(f);
+		archive << map;
+	}
+	catch (const std::exception& e)
+	{
+		// MRPT's archive fails on a full disk without naming the file.
+		throw std::runtime_error(path + ": cannot write the map (" + describe(e) + ")");
+	}
 	f.close();
 	if (!f) throw std::runtime_error(path + ": cannot write the map");
 }

@@ -94,6 +94,7 @@ void printMapOptions(std::ostream& os, const CEvidentialGridMap2D& map)
 	os << std::defaultfloat << "options:\n";
 	map.insertionOptions.dumpToTextStream(os);
 	map.likelihoodOptions.dumpToTextStream(os);
+	map.renderingOptions.dumpToTextStream(os);
 }
 
 }  // namespace evgrid

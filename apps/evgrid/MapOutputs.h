@@ -38,8 +38,8 @@ void printDecisionCounts(
 void printMotionCounts(
 	std::ostream& os, const mrpt_evidential::CEvidentialGridMap2D& map);
 
-/** "options:" and the map's insertion and likelihood options as .ini
- * sections. */
+/** "options:" and the map's insertion, likelihood and rendering options as
+ * .ini sections. */
 void printMapOptions(
 	std::ostream& os, const mrpt_evidential::CEvidentialGridMap2D& map);
 

@@ -12,6 +12,7 @@
 #include "CommandLine.h"
 #include "Commands.h"
 #include "MapFiles.h"
+#include "StopSignal.h"
 #include "MapOutputs.h"
 
 using mrpt_evidential::CEvidentialGridMap2D;
@@ -93,12 +94,18 @@ int runMerge(int argc, char** argv, int first)
 	const auto rule = enumNamed<FusionRule>("--rule", argRule.getValue());
 	const auto handling = enumNamed<ConflictHandling>("--conflict-handling", argHandling.getValue());
 
+	catchStopSignals();
 	COutputFolder out(argOut.getValue());
 	std::vector<CEvidentialGridMap2D::Ptr> maps;
-	for (const auto& path : inputs) maps.push_back(loadMap(path));
+	for (const auto& path : inputs)
+	{
+		maps.push_back(loadMap(path));
+		throwIfStopRequested();
+	}
 	CEvidentialGridMap2D merged = *maps.front();
 	for (std::size_t i = 1; i < maps.size(); ++i)
 	{
+		throwIfStopRequested();
 		try
 		{
 			merged.fuseMap(*maps[i], rule, handling);
@@ -109,7 +116,9 @@ int runMerge(int argc, char** argv, int first)
 		}
 	}
 
+	throwIfStopRequested();
 	saveMap(merged, out.staged("map.evgrid"));
+	throwIfStopRequested();
 	savePicturesIn(merged, out.stagingFolder());
 	writeSummary(out.staged("summary.txt"), inputs, maps, rule, handling, merged);
 	std::vector<std::string> results{"map.evgrid"};

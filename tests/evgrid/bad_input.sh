@@ -79,6 +79,11 @@ sed 's/^muF=0.7/muF=1.7/' "$EVGRID_INI" >"$T/bad-value.ini"
 expect_failure "$T/bad-value.ini: " -i "$SENA" -c "$T/bad-value.ini"
 contains "$ERR" "muF"
 expect_failure "$EVGRID_INI: no section [Elsewhere]" -i "$SENA" -c "$EVGRID_INI" -s Elsewhere
+expect_failure "$T: is a directory, not a config file" -i "$SENA" -c "$T"
+# A pipe cannot be read twice (checked in a child, then read).
+run 1 "$EVGRID" build -i <(cat "$SENA") -o "$out"
+contains "$ERR" ": not a regular file (a pipe or a device); evgrid reads its input twice"
+[ "$(fingerprint "$out")" = "$good" ] || fail "the failed run changed $out"
 
 # An interrupted run (SIGTERM, as `timeout` sends) cleans up and changes nothing.
 rc=0

@@ -45,6 +45,11 @@ run 2 "$EVGRID" build -i "$SENA" -o "$T/out" --animation --animation-size 640
 contains "$ERR" "--animation-size must be WIDTHxHEIGHT"
 run 2 "$EVGRID" build -i "$SENA" -o "$T/out" --animation-every 5
 contains "$ERR" "need --animation"
+# OpenCV's AVI writer keeps whole rates of at least 1 frame a second.
+for fps in 0.5 2.5 1001; do
+  run 2 "$EVGRID" build -i "$SENA" -o "$T/out" --animation --animation-fps "$fps"
+  contains "$ERR" "--animation-fps must be a whole number of frames per second, 1 to 1000, got $fps"
+done
 run 2 "$EVGRID" build -i "$SENA" -o "$T/out" extra-argument
 contains "$ERR" "unknown option or extra argument 'extra-argument'"
 [ ! -e "$T/out" ] || fail "a usage error created the output folder"

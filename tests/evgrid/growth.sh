@@ -9,7 +9,8 @@ frames=$(cd "$out/frames" && ls)
 [ "$frames" = "$(printf 'frame_%06d_map.png\n' 50 100 150 200)" ] ||
   fail "frames: $frames"
 contains "$out/summary.txt" "frames: 4 pictures in frames/, one every 50 scans"
-contains "$out/summary.txt" "animation: growth.avi, 22 frames of 320 x 240 at 10 frames/s"
+# 22 frames every 10 scans of 224, and the final map.
+contains "$out/summary.txt" "animation: growth.avi, 23 frames of 320 x 240 at 10 frames/s"
 
 # Frames grow with the map: each covers at least the cells of the one before,
 # and the final picture at least those of the last frame.
@@ -28,7 +29,13 @@ done
 # The video: MJPG in AVI, read back by OpenCV, every frame of the fixed size.
 [ "$(head -c 4 "$out/growth.avi")" = "RIFF" ] || fail "growth.avi is not an AVI file"
 run 0 "$EVGRID_CHECK" video "$out/growth.avi"
-[ "$(cat "$OUT")" = "22 320 240" ] || fail "growth.avi: $(cat "$OUT") (frames width height)"
+[ "$(cat "$OUT")" = "23 320 240" ] || fail "growth.avi: $(cat "$OUT") (frames width height)"
+# A frame every more scans than the input holds: the final map alone.
+run 0 "$EVGRID" build -i "$SENA" -o "$T/one-frame" --animation --animation-every 1000 \
+  --animation-size 64x64
+contains "$T/one-frame/summary.txt" "animation: growth.avi, 1 frames of 64 x 64"
+run 0 "$EVGRID_CHECK" video "$T/one-frame/growth.avi"
+[ "$(cat "$OUT")" = "1 64 64" ] || fail "one-frame growth.avi: $(cat "$OUT")"
 
 # A new run with --every replaces frames/: no frame of the old run remains.
 run 0 "$EVGRID" build -i "$SENA" -o "$out" --every 100

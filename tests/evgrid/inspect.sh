@@ -16,6 +16,7 @@ contains "$OUT" "$(grep -F '  x: [' "$built/summary.txt" | sed 's/^  //')"
 contains "$OUT" "$(grep -F '  y: [' "$built/summary.txt" | sed 's/^  //')"
 contains "$OUT" "[insertOpts]"
 contains "$OUT" "[likelihoodOpts]"
+contains "$OUT" "[renderOpts]"
 contains "$OUT" "muO = 0.9"
 # The same counts as the summary of the run that built it.
 [ "$(decisions "$OUT")" = "$(decisions "$built/summary.txt")" ] ||
@@ -62,6 +63,16 @@ contains "$ERR" "$T/text.evgrid: entry 0 at byte 0: not a rawlog, simplemap or m
 head -c 100000 "$map" >"$T/truncated.evgrid"
 run 1 "$EVGRID" inspect "$T/truncated.evgrid"
 contains "$ERR" "$T/truncated.evgrid: entry 0 at byte 0: the file ends inside this entry"
+# One byte of the cells changed: the map's own reason, not "not a map".
+cp "$map" "$T/damaged.evgrid"
+at=$(($(stat -c %s "$map") / 2))
+byte=$(od -An -tu1 -j "$at" -N1 "$map" | tr -d ' ')
+printf "\\$(printf %03o $((byte ^ 255)))" |
+  dd of="$T/damaged.evgrid" bs=1 seek="$at" conv=notrunc status=none
+cmp -s "$map" "$T/damaged.evgrid" && fail "the byte was not changed"
+run 1 "$EVGRID" inspect "$T/damaged.evgrid"
+contains "$ERR" "$T/damaged.evgrid: entry 0 at byte 0: CEvidentialGridMap2D: corrupted or invalid"
+contains "$ERR" "serialized map: checksum mismatch"
 run 1 "$EVGRID" inspect "$T/none.evgrid"
 contains "$ERR" "$T/none.evgrid: cannot open"
 echo "evgrid_inspect: OK"

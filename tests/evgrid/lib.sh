@@ -61,3 +61,33 @@ fingerprint() {
   (cd "$1" && find . -print0 | sort -z | xargs -0 -r sh -c \
     'for f; do if [ -f "$f" ]; then echo "$f $(cksum <"$f")"; else echo "$f"; fi; done' sh)
 }
+
+# interrupt SIGNAL DIR COMMAND...: runs COMMAND, which writes into the output
+# folder DIR (made empty first), in the background and sends it SIGNAL while
+# its staging folder exists, frozen meanwhile (SIGSTOP, SIGCONT) so that the
+# signal lands before it commits; a run that finishes before its staging
+# folder is seen is tried again. Fails unless the run exits 1 saying so and
+# leaves DIR empty.
+interrupt() {
+  local signal=$1 dir=$2 pid rc
+  shift 2
+  for _ in $(seq 20); do
+    rm -rf "$dir" && mkdir -p "$dir"
+    "$@" </dev/null >"$OUT" 2>"$ERR" &
+    pid=$!
+    while kill -0 "$pid" 2>/dev/null; do
+      if [ -n "$(find "$dir" -maxdepth 1 -name '.evgrid-build-*')" ]; then
+        kill -STOP "$pid" && kill "-$signal" "$pid" && kill -CONT "$pid"
+        rc=0
+        wait "$pid" || rc=$?
+        [ "$rc" -eq 1 ] || fail "interrupted by SIG$signal, exit code $rc: $*"
+        contains "$ERR" "; the output folder is unchanged"
+        [ -z "$(ls -A "$dir")" ] || fail "the interrupted run left $(ls -A "$dir") in $dir: $*"
+        return 0
+      fi
+      sleep 0.01
+    done
+    wait "$pid" || true
+  done
+  fail "never caught the run with its staging folder: $*"
+}

@@ -76,4 +76,10 @@ contains "$ERR" "give the two maps to compare, EARLIER and LATER"
 run 1 "$EVGRID" diff "$before" "$T/none.evgrid" -o "$T/x"
 contains "$ERR" "$T/none.evgrid"
 
+# 4. Stopped (Ctrl-C, SIGTERM, the terminal closed): the staging folder goes,
+#    nothing is written.
+interrupt INT "$T/stopped" "$EVGRID" merge "$before" "$after" -o "$T/stopped"
+interrupt TERM "$T/stopped" "$EVGRID" diff "$before" "$after" -o "$T/stopped"
+interrupt HUP "$T/stopped" "$EVGRID" merge "$before" "$after" -o "$T/stopped"
+
 echo "evgrid_merge_diff: OK"
