@@ -68,4 +68,24 @@ after=$(fingerprint "$T/png" && fingerprint "$T/grid" && fingerprint "$T/ros")
 [ "$before" = "$after" ] || fail "a failed export changed $T"
 run 1 "$EVGRID" export "$T/missing.evgrid" --png "$T/png"
 contains "$ERR" "$T/missing.evgrid: cannot open"
+
+# Stopped (Ctrl-C) at any moment: each file written whole or not at all,
+# never a temporary file left; a stopped export says so and exits 1.
+for delay in 0.1 0.2 0.3 0.5 0.8; do
+  rm -rf "$T/stop"
+  rc=0
+  timeout --preserve-status -s INT "$delay" "$EVGRID" export "$map" --png "$T/stop/png" \
+    --gridmap "$T/stop/sena.gridmap" --ros "$T/stop/sena" </dev/null >"$OUT" 2>"$ERR" || rc=$?
+  [ -z "$(find "$T/stop" -name '.*.tmp-*' 2>/dev/null)" ] || fail "temporary files left after $delay s"
+  case "$rc" in
+    0) ;;
+    1) contains "$ERR" "evgrid export: error: interrupted by signal 2; " ;;
+    # Killed before it caught the signal, which it does before writing.
+    130) [ -z "$(find "$T/stop" -type f 2>/dev/null)" ] || fail "killed after writing" ;;
+    *) fail "stopped after $delay s: exit code $rc" ;;
+  esac
+  # Whatever it listed is whole: the pictures read back.
+  listed=$(awk '$1 == "wrote" && /\.png$/ { print $2 }' "$OUT")
+  for file in $listed; do run 0 "$EVGRID_CHECK" image "$file"; done
+done
 echo "evgrid_export: OK"
