@@ -3,6 +3,7 @@
  * bad clouds. The worlds of tests/support/clouds.h give the answer per
  * cell. */
 #include <gtest/gtest.h>
+#include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/obs/CObservationRotatingScan.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 
@@ -281,6 +282,20 @@ TEST(Clouds, EmptyCloudsInsertNothing)
 	noCloud->pointcloud.reset();
 	EXPECT_TRUE(map.insertObservation(*noCloud, CPose3D()));
 	EXPECT_EQ(map.countDecisions().free + map.countDecisions().occupied, 0u);
+}
+
+TEST(Clouds, DepthFrameThatDoesNotFitItsCameraIsRefused)
+{
+	// A range image of 64 x 48 pixels with the default camera (640 x 480):
+	// MRPT's assertion becomes the map's std::invalid_argument.
+	CEvidentialGridMap2D map = makeMap();
+	mrpt::obs::CObservation3DRangeScan frame;
+	frame.hasRangeImage = true;
+	frame.rangeImage_setSize(48, 64);
+	frame.rangeImage.fill(1000);
+	frame.rangeUnits = 0.001f;
+	EXPECT_THROW(map.insertObservation(frame, CPose3D()), std::invalid_argument);
+	EXPECT_EQ(map.insertionCount(), 0u);
 }
 
 TEST(Clouds, CloudsOfAnySizeInTurnReadAsIntoANewMap)

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <new>
 #include <sstream>
 #include <string>
@@ -110,6 +111,38 @@ TEST(MapIO, FileRoundTripThroughSavedRepresentation)
 	CEvidentialGridMap2D copy;
 	archiveFrom(f) >> copy;
 	expectSameMap(original, copy);
+}
+
+TEST(MapIO, OptionsSetWrongInCodeAreRefusedBeforeWriting)
+{
+	// A file the map would refuse to read back is never written.
+	const fs::path dir = test::scratchDir("map_io", "wrong_options");
+	using Spoil = std::function<void(CEvidentialGridMap2D&)>;
+	const std::vector<std::pair<std::string, Spoil>> spoil = {
+		{"muF", [](CEvidentialGridMap2D& m) { m.insertionOptions.muF = 5.0; }},
+		{"sigma", [](CEvidentialGridMap2D& m) { m.likelihoodOptions.sigma = -1.0; }},
+		{"height", [](CEvidentialGridMap2D& m) { m.renderingOptions.height = std::nan(""); }},
+		// Valid for cells of 1 m, too many range bins for cells of 0.1 m.
+		{"maxRange", [](CEvidentialGridMap2D& m) { m.insertionOptions.maxRange = 2e6; }}};
+	for (std::size_t k = 0; k < spoil.size(); ++k)
+	{
+		CEvidentialGridMap2D map = mapWithEveryOption();
+		spoil[k].second(map);
+		// MRPT's archive wraps what the map throws in its own exception.
+		try
+		{
+			serialize(map);
+			ADD_FAILURE() << "case " << k << " serialized";
+		}
+		catch (const std::exception& e)
+		{
+			EXPECT_NE(std::string(e.what()).find(spoil[k].first), std::string::npos) << e.what();
+		}
+		const std::string prefix = (dir / ("case" + std::to_string(k))).string();
+		EXPECT_THROW(map.saveMetricMapRepresentationToFile(prefix), std::invalid_argument)
+			<< "case " << k;
+		EXPECT_TRUE(fs::is_empty(dir)) << "case " << k << " wrote a file";
+	}
 }
 
 TEST(MapIO, EveryFlippedByteIsDetected)
@@ -268,6 +301,43 @@ TEST(MapIO, MultiMetricMapCopyHoldsTheSameCells)
 	ASSERT_TRUE(copied);
 	EXPECT_NE(copied.get(), map.get());
 	expectSameMap(*map, *copied);
+}
+
+TEST(MapIO, MovesLeaveAnEmptyMapThatStillWorks)
+{
+	const CEvidentialGridMap2D original = mapWithEveryOption();
+	const auto scan = test::scanByIndex(
+		kMapFileRays, kMapFileScans.at(60.0), [](std::size_t i) { return 1.0 + 0.004 * i; });
+	const mrpt::poses::CPose3D pose(0.2, 0.1, 0, 0.4, 0, 0);
+	const auto expectUsable = [&](CEvidentialGridMap2D& m) {
+		// An empty grid: every cell read is vacuous, the likelihood a number
+		// (not the moved map's cached field), and it takes scans again.
+		EXPECT_EQ(m.getSizeX() * m.getSizeY(), 0);
+		EXPECT_EQ(m.getCellMasses(0.5, 0.5).unknown, 1.0);
+		EXPECT_EQ(m.countDecisions().occupied, 0u);
+		EXPECT_TRUE(std::isfinite(m.computeObservationLikelihood(scan, pose)));
+		m.setSize(-2, 2, -2, 2, 0.1);
+		EXPECT_TRUE(m.insertObservation(scan, pose));
+		EXPECT_GT(m.countDecisions().occupied, 0u);
+	};
+
+	CEvidentialGridMap2D from = original;
+	(void)from.computeObservationLikelihood(scan, pose);  // a cached field
+	CEvidentialGridMap2D to(std::move(from));
+	expectSameMap(original, to);
+	expectUsable(from);
+
+	CEvidentialGridMap2D assigned;
+	CEvidentialGridMap2D source = original;
+	assigned = std::move(source);
+	expectSameMap(original, assigned);
+	expectUsable(source);
+
+	// Into itself: nothing changes.
+	CEvidentialGridMap2D self = original;
+	CEvidentialGridMap2D& alias = self;
+	self = std::move(alias);
+	expectSameMap(original, self);
 }
 
 // ---------------------------------------------------------------------------

@@ -169,6 +169,25 @@ TEST(Likelihood, ScanScoresBestAtItsOwnPose)
 	}
 }
 
+TEST(Likelihood, ALongCutKeepsTheOwnPoseBest)
+{
+	// Cuts past 16 cells code distances coarser far from the obstacles; a
+	// ray ending on one must still score as on it, and a shift still cost.
+	CEvidentialGridMap2D map;
+	buildRoomMap(map);
+	const CPose2D truth(0.5, -1.0, deg(30));
+	const auto scan = castScan(room(), truth, 100.0);
+	const double nearCut = score(map, scan, truth);
+	for (const double cut : {3.0, 30.0, 100.0, 1000.0})
+	{
+		map.likelihoodOptions.maxCorrsDistance = cut;
+		const double own = score(map, scan, truth);
+		EXPECT_NEAR(own, nearCut, 0.05 * std::abs(nearCut)) << "cut " << cut;
+		for (const auto& [name, moved] : perturbations(truth))
+			EXPECT_GT(own, score(map, scan, moved)) << "cut " << cut << " moved " << name;
+	}
+}
+
 TEST(Likelihood, OnlyScansCanBeScored)
 {
 	CEvidentialGridMap2D map;

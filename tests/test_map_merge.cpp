@@ -107,6 +107,22 @@ TEST(MapMerge, MapsOnOtherLatticesAreRefusedUnchanged)
 	EXPECT_ANY_THROW(a.changesSince(a, 0.5, -1.0));
 }
 
+TEST(MapMerge, UnknownRulesAndHandlingsAreRefusedUnchanged)
+{
+	const CEvidentialGridMap2D a = run(0.0);
+	CEvidentialGridMap2D b = run(0.5);
+	const auto before = b.countDecisions();
+	const ConflictHandling handlingBefore = b.insertionOptions.conflictHandling;
+	EXPECT_THROW(
+		b.fuseMap(a, static_cast<FusionRule>(99), ConflictHandling::Keep), std::invalid_argument);
+	EXPECT_THROW(
+		b.fuseMap(a, FusionRule::Conjunctive, static_cast<ConflictHandling>(99)),
+		std::invalid_argument);
+	EXPECT_EQ(b.countDecisions().occupied, before.occupied);
+	EXPECT_EQ(b.countDecisions().free, before.free);
+	EXPECT_EQ(b.insertionOptions.conflictHandling, handlingBefore);
+}
+
 TEST(MapMerge, ChangesBetweenRunsAreFoundAndNotOnTheWall)
 {
 	// The box stands 1.5 m ahead in the second run only; the second run's

@@ -163,6 +163,16 @@ TEST(MapPictures, EmptyMapPictures)
 		}
 }
 
+TEST(MapPictures, FramesOfAbsurdSizesAreRefused)
+{
+	const CEvidentialGridMap2D map(0.0, 1.0, 0.0, 0.5, 0.1);
+	mrpt::img::CImage img;
+	for (const auto& [w, h] : {std::pair(100000, 100000), {-1, 100}, {100, 8193}})
+		EXPECT_THROW(map.getAsPicture(0, img, true, w, h), std::invalid_argument) << w << " x " << h;
+	map.getAsPicture(0, img, true, 64, 64);
+	EXPECT_EQ(img.getWidth(), 64u);
+}
+
 TEST(MapPictures, BetPAndConflictGreyLevels)
 {
 	const CEvidentialGridMap2D map = conflictingMap();

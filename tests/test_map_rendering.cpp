@@ -197,6 +197,8 @@ TEST(MapRendering, TheThreeDViewHasOneUnlitObjectPerClassShown)
 					<< name;
 				cx += t.x(k) / 3.0, cy += t.y(k) / 3.0;
 			}
+			// Vertices are given from the set's pose (the grid's origin).
+			cx += set->getPose().x, cy += set->getPose().y;
 			ASSERT_EQ(map.classOfCell(cx, cy), cls) << name << " at (" << cx << ", " << cy << ")";
 		}
 		const double area = areaOf(*set);
@@ -274,6 +276,43 @@ TEST(MapRendering, OptionsChooseWhatTheThreeDViewShows)
 	mrpt::opengl::CSetOfObjects none;
 	map.getVisualizationInto(none);
 	EXPECT_EQ(none.size(), 0u);
+}
+
+TEST(MapRendering, FarFromTheOriginTheViewStaysOnItsCells)
+{
+	// UTM-like coordinates: 1e7 m is where floats of world coordinates put
+	// a triangle two cells off. Each triangle's centroid, from the set's
+	// pose, must lie in a cell of its class; the plane must span the grid.
+	const double x0 = 1e7, y0 = 3e6;
+	CEvidentialGridMap2D map(x0, x0 + 6.0, y0, y0 + 6.0, 0.05);
+	map.insertionOptions.growthMargin = 0.0;
+	map.insertObservation(
+		test::scanByIndex(kRays, kSetup, [](std::size_t) { return 2.5; }),
+		mrpt::poses::CPose3D(x0 + 3.0, y0 + 3.0, 0, 0, 0, 0));
+	std::size_t checked = 0;
+	for (const auto& [name, set] : trianglesOf(map))
+		for (std::size_t i = 0; i < set->getTrianglesCount(); ++i)
+		{
+			mrpt::opengl::TTriangle t;
+			set->getTriangle(i, t);
+			const double cx = set->getPose().x + (t.x(0) + t.x(1) + t.x(2)) / 3.0;
+			const double cy = set->getPose().y + (t.y(0) + t.y(1) + t.y(2)) / 3.0;
+			const CellClass cls = name == "evidentialGrid.free" ? CellClass::Free : CellClass::Occupied;
+			ASSERT_EQ(map.classOfCell(cx, cy), cls) << name << " at (" << cx - x0 << ", " << cy - y0 << ")";
+			++checked;
+		}
+	EXPECT_GT(checked, 10u);
+
+	map.renderingOptions.style = RenderStyle::Masses;
+	const auto plane = std::dynamic_pointer_cast<mrpt::opengl::CTexturedPlane>(
+		objectsOf(map).begin()->second);
+	ASSERT_TRUE(plane);
+	float px0, px1, py0, py1;
+	plane->getPlaneCorners(px0, px1, py0, py1);
+	EXPECT_DOUBLE_EQ(plane->getPose().x + px0, map.getXMin());
+	EXPECT_NEAR(plane->getPose().x + px1, map.getXMax(), 1e-5);
+	EXPECT_DOUBLE_EQ(plane->getPose().y + py0, map.getYMin());
+	EXPECT_NEAR(plane->getPose().y + py1, map.getYMax(), 1e-5);
 }
 
 TEST(MapRendering, OptionsRoundTripThroughIniFilesAndMapDefinitions)

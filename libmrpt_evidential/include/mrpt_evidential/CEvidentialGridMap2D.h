@@ -216,7 +216,10 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	 * something appeared in renderingOptions.appearedColor, cells it left in
 	 * renderingOptions.disappearedColor. */
 	void getAsMotionImage(mrpt::img::CImage& img) const;
-	/** Fills an occupancy grid of the same geometry with occupancy = BetP. */
+	/** Fills an occupancy grid of the same geometry with occupancy = BetP.
+	 * COccupancyGridMap2D keeps its bounds in single precision: from about
+	 * 1e6 m from the origin its origin may be a cell off, and MRPT throws
+	 * for bounds its floats cannot tell apart (1e9 m). */
 	void getAsOccupancyGrid(mrpt::maps::COccupancyGridMap2D& grid) const;
 	/** Writes a ROS map_server pair, `<prefix>.pgm` and `<prefix>.yaml`
 	 * (occupancy = BetP; unknown cells as 205). Written atomically.
@@ -235,7 +238,8 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	 * its legend and scale bar unless `withLegend` is false; with `width`
 	 * and `height` > 0 (a video's frames), scaled to fit a picture of that
 	 * size above the legend (the legend left out when it would take more
-	 * than half of the height). \throws std::out_of_range if which >= 5. */
+	 * than half of the height). \throws std::out_of_range if which >= 5;
+	 *  std::invalid_argument if width or height is outside [0, 8192]. */
 	void getAsPicture(
 		std::size_t which, mrpt::img::CImage& img, bool withLegend = true, int width = 0,
 		int height = 0) const;
@@ -275,9 +279,10 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	 * its conflictHandling to `handling` (Keep: the cells keep the conflict
 	 * between the runs), keeps the cells that held impacts in either, and
 	 * clears its motion layer (events of two runs share no clock). Fusing
-	 * into an empty map copies. \throws std::invalid_argument if the
-	 *  lattices differ (the message gives both), or if the grid cannot grow
-	 *  to other's extent within maxCells(); the map is then unchanged. */
+	 * into an empty map copies. \throws std::invalid_argument if `rule` or
+	 *  `handling` is no member of its enum, if the lattices differ (the
+	 *  message gives both), or if the grid cannot grow to other's extent
+	 *  within maxCells(); the map is then unchanged. */
 	void fuseMap(const CEvidentialGridMap2D& other, FusionRule rule, ConflictHandling handling);
 	/** What changed from an earlier run of the same place to this one. */
 	struct TMapChanges
@@ -314,7 +319,9 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	mrpt::math::TBoundingBoxf boundingBox() const MRPT_EVIDENTIAL_OVERRIDE_SINCE_2_11_3;
 	/** Writes savePictures(`<prefix>_`), `<prefix>_info.txt` (geometry, options and
 	 * counts per decision) and `<prefix>.evgrid` (the serialized map), each
-	 * atomically. \throws std::runtime_error if a file cannot be written. */
+	 * atomically. \throws std::invalid_argument, before writing anything,
+	 *  if an option set in code is invalid (the map could not be read back);
+	 *  std::runtime_error if a file cannot be written. */
 	void saveMetricMapRepresentationToFile(
 		const std::string& filNamePrefix) const override;
 	/** One line: geometry, insertions and counts per decision. */

@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <mrpt_evidential/support/NumberText.h>
 
@@ -50,6 +51,22 @@ std::uint16_t ceilingFor(bool keepsConflict)
 		: quantizeMass(EvidentialGridStorage::kMaxCertainty);
 }
 }  // namespace
+
+EvidentialGridStorage::EvidentialGridStorage(EvidentialGridStorage&& other)
+	: detail::TGridStorageState(std::move(other))
+{
+	static_cast<detail::TGridStorageState&>(other) = detail::TGridStorageState{};
+}
+
+EvidentialGridStorage& EvidentialGridStorage::operator=(EvidentialGridStorage&& other)
+{
+	if (this != &other)
+	{
+		static_cast<detail::TGridStorageState&>(*this) = std::move(other);
+		static_cast<detail::TGridStorageState&>(other) = detail::TGridStorageState{};
+	}
+	return *this;
+}
 
 void EvidentialGridStorage::reset(
 	double xMin, double xMax, double yMin, double yMax, double resolution,

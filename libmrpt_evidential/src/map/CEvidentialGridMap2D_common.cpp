@@ -245,15 +245,7 @@ float CEvidentialGridMap2D::compute3DMatchingRatio(
 // Insertion options
 // ---------------------------------------------------------------------------
 
-namespace
-{
-template <typename Enum>
-bool isMember(Enum value)
-{
-	std::string name;
-	return mrpt::typemeta::TEnumType<Enum>::getBimap().direct(value, name);
-}
-}  // namespace
+using detail::isMember;
 
 std::optional<TInvalidOption> TEvidentialInsertionOptions::firstInvalidOfTheMap() const
 {

@@ -14,11 +14,13 @@
 #include <filesystem>
 #include <ostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <mrpt_evidential/support/AtomicFile.h>
 #include <mrpt_evidential/support/NumberText.h>
+#include "map/OptionsCheck.h"
 #include "render/PictureLegend.h"
 
 using namespace mrpt_evidential;
@@ -239,6 +241,12 @@ constexpr std::size_t kMotionPicture = 4;
 void CEvidentialGridMap2D::getAsPicture(
 	std::size_t which, mrpt::img::CImage& img, bool withLegend, int width, int height) const
 {
+	// A frame of any size would be allocated (100000 x 100000: 30 GB).
+	constexpr int kMaxFrame = 8192;
+	if (width < 0 || height < 0 || width > kMaxFrame || height > kMaxFrame)
+		throw std::invalid_argument(
+			"getAsPicture: a frame of " + std::to_string(width) + " x " + std::to_string(height) +
+			" pixels; each side must be in [0, 8192]");
 	using Painter = void (CEvidentialGridMap2D::*)(mrpt::img::CImage&) const;
 	const std::array<Painter, 5> painters{
 		&CEvidentialGridMap2D::getAsImage, &CEvidentialGridMap2D::getAsEvidentialImage,
@@ -299,6 +307,9 @@ std::string CEvidentialGridMap2D::geometryText(const std::string& indent) const
 void CEvidentialGridMap2D::saveMetricMapRepresentationToFile(
 	const std::string& filNamePrefix) const
 {
+	// Before any file: the .evgrid's write would refuse them after the pictures.
+	detail::validateSavedOptions(
+		insertionOptions, likelihoodOptions, renderingOptions, geometry().resolution);
 	savePictures(filNamePrefix + "_");
 	saveAsScene(filNamePrefix + ".3Dscene");
 

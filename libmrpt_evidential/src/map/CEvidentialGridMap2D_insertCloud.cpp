@@ -15,6 +15,8 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <stdexcept>
+#include <string>
 
 #include "cloud/CloudSectors.h"
 #include "map/MapWorkspace.h"
@@ -110,7 +112,21 @@ std::optional<mrpt::poses::CPose3D> CEvidentialGridMap2D::cloudInRobotFrame(
 			mrpt::maps::CSimplePointsMap cloud;
 			mrpt::obs::T3DPointsProjectionParams projection;
 			projection.takeIntoAccountSensorPoseOnRobot = false;
-			copy.unprojectInto(cloud, projection);
+			// MRPT asserts that the image fits the camera's parameters.
+			try
+			{
+				copy.unprojectInto(cloud, projection);
+			}
+			catch (const std::exception&)
+			{
+				throw std::invalid_argument(
+					"a depth frame that cannot be unprojected: its range image (" +
+					std::to_string(o->rangeImage.cols()) + " x " +
+					std::to_string(o->rangeImage.rows()) +
+					") does not fit its camera parameters (" +
+					std::to_string(o->cameraParams.ncols) + " x " +
+					std::to_string(o->cameraParams.nrows) + ")");
+			}
 			pointsOf(cloud, o->sensorPose, points);
 		}
 		else if (o->hasPoints3D)

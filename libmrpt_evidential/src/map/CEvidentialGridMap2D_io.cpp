@@ -57,6 +57,8 @@
 #include <string>
 #include <vector>
 
+#include "map/OptionsCheck.h"
+
 using namespace mrpt_evidential;
 using mrpt::serialization::CArchive;
 
@@ -173,6 +175,10 @@ uint8_t CEvidentialGridMap2D::serializeGetVersion() const { return 5; }
 
 void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 {
+	// Options set in code are checked only when used: a map must not write
+	// a file that reading refuses.
+	detail::validateSavedOptions(
+		insertionOptions, likelihoodOptions, renderingOptions, geometry().resolution);
 	ChecksummedArchive ar(out);
 	const GridGeometry& g = geometry();
 	ar << g.xMin << g.yMin << g.resolution << static_cast<std::int32_t>(g.sizeX)
@@ -366,12 +372,7 @@ void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 
 	try
 	{
-		io.validate();
-		lo.validate();
-		ro.validate();
-		// The polar grid's rules at the grid's own cells (validate() checks
-		// them for cells of 1 m): a map read back must be able to insert.
-		io.sourceGridOptions(g.resolution).validate();
+		detail::validateSavedOptions(io, lo, ro, g.resolution);
 	}
 	catch (const std::invalid_argument& e)
 	{

@@ -34,7 +34,10 @@ struct CEvidentialGridMap2D::LikelihoodField
 	/** Codes below kFarSeen: the distance to the nearest obstacle, below
 	 * maxCorrsDistance. When the squared cut, in cells, is below kFarSeen
 	 * (the usual case) the code is the exact squared distance in cells;
-	 * otherwise the distance in steps of maxCorrsDistance / kFarSeen.
+	 * otherwise c codes the distance maxCorrsDistance (c / (kFarSeen - 1))^2,
+	 * rounded: fine near the obstacles, where the score changes, and 0 on
+	 * them however long the cut (steps of cut / kFarSeen made a ray on an
+	 * obstacle score as if half a step away, metres for a long cut).
 	 * kFarSeen: no obstacle within maxCorrsDistance; kFarUnseen: none, and
 	 * the cell was never seen (its largest mass is m(Omega)). Every margin
 	 * cell is never seen. */
@@ -43,15 +46,18 @@ struct CEvidentialGridMap2D::LikelihoodField
 	/** The options the field and its scores were built with: the fields are
 	 * public and nothing tells the map of a change, so it is checked. */
 	TLikelihoodOptions options;
+	/** The layout() of the grid it was built for: a map moved from keeps its
+	 * cache but is left an empty grid of another layout. */
+	std::size_t layout = 0;
 	/** Geometry of the field: the map's, grown by the margin on every side. */
 	GridGeometry geometry;
 	std::vector<std::uint8_t> code;
 	/** Log-likelihood of a ray ending in a cell of each code. */
 	std::array<double, 256> score{};
 
-	bool builtWith(const TLikelihoodOptions& o) const
+	bool builtFor(const TLikelihoodOptions& o, std::size_t gridLayout) const
 	{
-		return options.occupiedMass == o.occupiedMass &&
+		return layout == gridLayout && options.occupiedMass == o.occupiedMass &&
 			options.maxCorrsDistance == o.maxCorrsDistance &&
 			options.sigma == o.sigma && options.zHit == o.zHit &&
 			options.zRandom == o.zRandom && options.maxRange == o.maxRange &&
@@ -246,19 +252,24 @@ std::shared_ptr<const CEvidentialGridMap2D::LikelihoodField>
 	std::lock_guard<std::mutex> lock(m_workspace->likelihoodMutex);
 	std::shared_ptr<const LikelihoodField>& cached = m_workspace->likelihood;
 	const TLikelihoodOptions& opts = likelihoodOptions;
-	if (cached && cached->builtWith(opts)) return cached;
+	if (cached && cached->builtFor(opts, m_grid.layout())) return cached;
 	opts.validate();
 
 	const GridGeometry& map = m_grid.geometry();
 	auto field = std::make_shared<LikelihoodField>();
 	field->options = opts;
+	field->layout = m_grid.layout();
 	using Field = LikelihoodField;
 	const double cutCells = opts.maxCorrsDistance / map.resolution;
 	const bool squaredCodes = cutCells * cutCells < Field::kFarSeen;
-	const double step = opts.maxCorrsDistance / Field::kFarSeen;
+	constexpr double kTop = Field::kFarSeen - 1;
 	const auto distanceOf = [&](int c) {
 		return squaredCodes ? std::sqrt(static_cast<double>(c)) * map.resolution
-							: (c + 0.5) * step;
+							: opts.maxCorrsDistance * (c / kTop) * (c / kTop);
+	};
+	const auto codeOf = [&](double squaredCells, double d) {
+		return squaredCodes ? squaredCells
+							: std::floor(kTop * std::sqrt(d / opts.maxCorrsDistance) + 0.5);
 	};
 
 	// Per ray: log(zRandom / maxRange + zHit exp(-d^2 / (2 sigma^2))), as the
@@ -346,8 +357,8 @@ std::shared_ptr<const CEvidentialGridMap2D::LikelihoodField>
 		{
 			const double d = std::sqrt(squared[fx]) * g.resolution;
 			if (d < opts.maxCorrsDistance)
-				field->code[first + fx] = static_cast<std::uint8_t>(std::min<double>(
-					squaredCodes ? squared[fx] : d / step, Field::kFarSeen - 1));
+				field->code[first + fx] = static_cast<std::uint8_t>(
+					std::min<double>(codeOf(squared[fx], d), kTop));
 		}
 	}
 

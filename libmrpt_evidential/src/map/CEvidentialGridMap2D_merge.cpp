@@ -10,6 +10,7 @@
 #include <string>
 
 #include "insert/MotionDetector.h"
+#include "map/ConfigReading.h"
 #include "map/MapWorkspace.h"
 #include <mrpt_evidential/support/NumberText.h>
 
@@ -55,7 +56,13 @@ std::optional<std::size_t> CEvidentialGridMap2D::cellOfOther(
 void CEvidentialGridMap2D::fuseMap(
 	const CEvidentialGridMap2D& other, FusionRule rule, ConflictHandling handling)
 {
-	latticeOffset(geometry(), other.geometry());  // before anything changes
+	// Before anything changes.
+	if (!detail::isMember(rule))
+		throw std::invalid_argument("fuseMap: unknown rule " + std::to_string(int(rule)));
+	if (!detail::isMember(handling))
+		throw std::invalid_argument(
+			"fuseMap: unknown conflict handling " + std::to_string(int(handling)));
+	latticeOffset(geometry(), other.geometry());
 	const GridGeometry& g = other.geometry();
 	if (!other.isEmpty() &&
 		!m_grid.growToInclude(g.xMin, g.xMax(), g.yMin, g.yMax(), 0.0, m_maxCells))

@@ -43,15 +43,17 @@ const mrpt::img::TColor kPathColor{0xE0, 0x20, 0x20};
 mrpt::opengl::CTexturedPlane::Ptr makePlane(
 	const GridGeometry& g, double z, mrpt::img::CImage&& image, mrpt::img::CImage&& alpha)
 {
+	// Corners from the grid's origin, which the plane's pose (doubles) holds:
+	// floats of world coordinates lose cells from 1e6 m (UTM) on.
 	auto plane = mrpt::opengl::CTexturedPlane::Create(
-		static_cast<float>(g.xMin), static_cast<float>(g.xMax()), static_cast<float>(g.yMin),
-		static_cast<float>(g.yMax()));
+		0.0f, static_cast<float>(g.sizeX * g.resolution), 0.0f,
+		static_cast<float>(g.sizeY * g.resolution));
 	plane->assignImage(std::move(image), std::move(alpha));
 	// Unlit, so that the colour on screen is the option's (MRPT 2.14's
 	// default; MRPT 2.5.8 lights planes).
 	plane->CRenderizableShaderTexturedTriangles::enableLight(false);
 	plane->CRenderizableShaderTriangles::enableLight(false);
-	plane->setLocation(0.0, 0.0, z);
+	plane->setLocation(g.xMin, g.yMin, z);
 	return plane;
 }
 }  // namespace
@@ -233,6 +235,9 @@ void CEvidentialGridMap2D::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) 
 		if (rects.empty()) continue;
 		auto triangles = mrpt::opengl::CSetOfTriangles::Create();
 		triangles->setName(name + suffix);
+		// Vertices from the grid's origin, held by the pose in doubles (see
+		// makePlane()).
+		triangles->setLocation(g.xMin, g.yMin, 0.0);
 		// Unlit, so that the colour on screen is the option's.
 		triangles->enableLight(false);
 		triangles->reserve(2 * rects.size());
@@ -242,10 +247,10 @@ void CEvidentialGridMap2D::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) 
 		const double seam = 0.02 * g.resolution;
 		for (const auto& r : rects)
 		{
-			const auto x0 = static_cast<float>(g.xMin + r.cx0 * g.resolution - seam);
-			const auto x1 = static_cast<float>(g.xMin + (r.cx1 + 1) * g.resolution + seam);
-			const auto y0 = static_cast<float>(g.yMin + r.cy0 * g.resolution - seam);
-			const auto y1 = static_cast<float>(g.yMin + (r.cy1 + 1) * g.resolution + seam);
+			const auto x0 = static_cast<float>(r.cx0 * g.resolution - seam);
+			const auto x1 = static_cast<float>((r.cx1 + 1) * g.resolution + seam);
+			const auto y0 = static_cast<float>(r.cy0 * g.resolution - seam);
+			const auto y1 = static_cast<float>((r.cy1 + 1) * g.resolution + seam);
 			for (const auto& [p, q, w] :
 				 {std::array{mrpt::math::TPoint3Df(x0, y0, z), mrpt::math::TPoint3Df(x1, y0, z),
 							 mrpt::math::TPoint3Df(x1, y1, z)},

@@ -122,6 +122,15 @@ inline void readBool(
 		throwBadValue(section, key, text, "not true or false");
 }
 
+/** Whether `value` is one of the enum's named members (MRPT_ENUM_TYPE): a
+ * value cast from any integer is not. */
+template <typename Enum>
+bool isMember(Enum value)
+{
+	std::string name;
+	return mrpt::typemeta::TEnumType<Enum>::getBimap().direct(value, name);
+}
+
 /** Reads an enum by name (MRPT_ENUM_TYPE) when the key is present. */
 template <typename Enum>
 void readEnum(

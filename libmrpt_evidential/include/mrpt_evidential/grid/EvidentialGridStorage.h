@@ -36,6 +36,47 @@ constexpr bool isCautious(FreeFusion rule)
 	return rule == FreeFusion::CautiousNormalized || rule == FreeFusion::CautiousToUnknown;
 }
 
+namespace detail
+{
+/** The data of an EvidentialGridStorage, apart so that a move can leave the
+ * grid it moves from as the default constructor makes it (an empty grid
+ * whose invariants hold) instead of a geometry without its cells. */
+struct TGridStorageState
+{
+	GridGeometry m_geometry;
+	CellBlock m_cells;
+	/** See layout(); 0 for the empty grid of the default constructor. */
+	std::size_t m_layout = 0;
+	/** The latest growth into a new block: the layout and geometry before
+	 * it, and the columns and rows it added before the old cells. */
+	struct TGrowth
+	{
+		std::size_t layout = 0;
+		GridGeometry geometry;
+		int dx = 0, dy = 0;
+	} m_grownFrom;
+	double m_decayRate = 0.0;
+	bool m_keepsConflict = true;
+	/** Every cell vacuous since reset(), no insertion begun and nothing
+	 * assigned: setKeepsConflict() has no cell to convert. (Cells change only
+	 * within an insertion, after beginInsertion().) */
+	bool m_pristine = true;
+	double m_eventRetention = 0.0;
+	/** kMaxCertainty in stored units, or the scale itself when the grid
+	 * keeps conflict. */
+	std::uint16_t m_ceiling = static_cast<std::uint16_t>(kMassScale);
+	/** Time of each stamp; stamp 0 is the oldest. Never empty. */
+	std::vector<double> m_stampTimes{0.0};
+	/** exp(decayRate (time of stamp - oldest)) and exp(-decayRate (latest -
+	 * oldest)): their product is a stamp's decay factor, one multiplication
+	 * per cell read instead of an exp. */
+	std::vector<double> m_stampGain{1.0};
+	double m_presentGain = 1.0;
+	std::uint16_t m_currentStamp = 0;
+	std::size_t m_insertions = 0;
+};
+}  // namespace detail
+
 /** The cells of an evidential grid with their decay and motion events.
  *
  * Decay is classical discounting with rate 1 - exp(-decayRate dt) after dt
@@ -53,7 +94,7 @@ constexpr bool isCautious(FreeFusion rule)
  * leaves the cell, no cell is ever surer than kMaxCertainty of one
  * hypothesis (so that evidence against it can always win), and each cell
  * remembers its latest motion event instead (CellEvent), with its time. */
-class EvidentialGridStorage
+class EvidentialGridStorage : private detail::TGridStorageState
 {
    public:
 	/** Largest number of insertion times before the stamps are rebased (an
@@ -68,6 +109,14 @@ class EvidentialGridStorage
 	/** An empty (0 x 0) grid of resolution 0.1 m with no decay, keeping
 	 * conflict. */
 	EvidentialGridStorage() = default;
+	EvidentialGridStorage(const EvidentialGridStorage&) = default;
+	EvidentialGridStorage& operator=(const EvidentialGridStorage&) = default;
+	/** Takes `other`'s cells and settings; `other` is left an empty grid, as
+	 * the default constructor makes it. \throws std::bad_alloc */
+	EvidentialGridStorage(EvidentialGridStorage&& other);
+	/** As the move constructor; moving a grid into itself changes nothing.
+	 * \throws std::bad_alloc */
+	EvidentialGridStorage& operator=(EvidentialGridStorage&& other);
 
 	/** Discards every cell and sets the geometry to cover [xMin, xMax] x
 	 * [yMin, yMax] with square cells of `resolution` metres, all vacuous.
@@ -540,38 +589,6 @@ class EvidentialGridStorage
 	/** Tells the cells' block that only the grid's cells are written (the
 	 * room around them never is), after the geometry changed in it. */
 	void writeOnlyTheGrid();
-
-	GridGeometry m_geometry;
-	CellBlock m_cells;
-	/** See layout(); 0 for the empty grid of the default constructor. */
-	std::size_t m_layout = 0;
-	/** The latest growth into a new block: the layout and geometry before
-	 * it, and the columns and rows it added before the old cells. */
-	struct TGrowth
-	{
-		std::size_t layout = 0;
-		GridGeometry geometry;
-		int dx = 0, dy = 0;
-	} m_grownFrom;
-	double m_decayRate = 0.0;
-	bool m_keepsConflict = true;
-	/** Every cell vacuous since reset(), no insertion begun and nothing
-	 * assigned: setKeepsConflict() has no cell to convert. (Cells change only
-	 * within an insertion, after beginInsertion().) */
-	bool m_pristine = true;
-	double m_eventRetention = 0.0;
-	/** kMaxCertainty in stored units, or the scale itself when the grid
-	 * keeps conflict. */
-	std::uint16_t m_ceiling = static_cast<std::uint16_t>(kMassScale);
-	/** Time of each stamp; stamp 0 is the oldest. Never empty. */
-	std::vector<double> m_stampTimes{0.0};
-	/** exp(decayRate (time of stamp - oldest)) and exp(-decayRate (latest -
-	 * oldest)): their product is a stamp's decay factor, one multiplication
-	 * per cell read instead of an exp. */
-	std::vector<double> m_stampGain{1.0};
-	double m_presentGain = 1.0;
-	std::uint16_t m_currentStamp = 0;
-	std::size_t m_insertions = 0;
 };
 
 }  // namespace mrpt_evidential
