@@ -15,6 +15,13 @@
 
 namespace evgrid
 {
+namespace
+{
+/** map.png: the static map with what moved (or the conflict of a map that
+ * keeps it), as the 3-D view draws it; the frames and the video show it. */
+constexpr std::size_t kMapPicture = 0;
+}  // namespace
+
 CGrowthRecorder::CGrowthRecorder(
 	const TGrowthOptions& options, const COutputFolder& out)
 	: m_options(options), m_out(out)
@@ -36,12 +43,9 @@ void CGrowthRecorder::afterInsertion(
 
 	CScopedTimer t(m_writingSeconds);
 	using Map = mrpt_evidential::CEvidentialGridMap2D;
-	// map.png: the static map with what moved (or the conflict of a map that
-	// keeps it), as the 3-D view draws it.
-	constexpr std::size_t kMapPicture = 0;
-	mrpt::img::CImage picture;
 	if (frame)
 	{
+		mrpt::img::CImage picture;
 		const std::string folder = m_out.staged("frames");
 		std::filesystem::create_directories(folder);
 		map.getAsPicture(kMapPicture, picture);
@@ -59,7 +63,6 @@ void CGrowthRecorder::afterInsertion(
 void CGrowthRecorder::addVideoFrame(
 	const mrpt_evidential::CEvidentialGridMap2D& map, std::size_t inserted)
 {
-	constexpr std::size_t kMapPicture = 0;
 	mrpt::img::CImage picture;
 	map.getAsPicture(kMapPicture, picture, true, m_animation->width(), m_animation->height());
 	m_animation->add(picture);
