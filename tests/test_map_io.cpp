@@ -305,17 +305,28 @@ TEST(MapIO, MultiMetricMapCopyHoldsTheSameCells)
 
 TEST(MapIO, MovesLeaveAnEmptyMapThatStillWorks)
 {
-	const CEvidentialGridMap2D original = mapWithEveryOption();
+	const CEvidentialGridMap2D original = [] {
+		CEvidentialGridMap2D m = mapWithEveryOption();
+		m.genericMapParams.enableObservationLikelihood = true;  // off there
+		return m;
+	}();
 	const auto scan = test::scanByIndex(
 		kMapFileRays, kMapFileScans.at(60.0), [](std::size_t i) { return 1.0 + 0.004 * i; });
 	const mrpt::poses::CPose3D pose(0.2, 0.1, 0, 0.4, 0, 0);
+	// The likelihood of an empty grid with the same options, which never had
+	// a field: a moved-from map must score so, not with the field it cached.
+	CEvidentialGridMap2D blank;
+	blank.likelihoodOptions = original.likelihoodOptions;
+	const CEvidentialGridMap2D blankSink(std::move(blank));
+	const double emptyScore = blank.computeObservationLikelihood(scan, pose);
+	ASSERT_NE(original.computeObservationLikelihood(scan, pose), emptyScore);
 	const auto expectUsable = [&](CEvidentialGridMap2D& m) {
-		// An empty grid: every cell read is vacuous, the likelihood a number
-		// (not the moved map's cached field), and it takes scans again.
+		// An empty grid: every cell read is vacuous, the likelihood that of
+		// an empty grid, and it takes scans again.
 		EXPECT_EQ(m.getSizeX() * m.getSizeY(), 0);
 		EXPECT_EQ(m.getCellMasses(0.5, 0.5).unknown, 1.0);
 		EXPECT_EQ(m.countDecisions().occupied, 0u);
-		EXPECT_TRUE(std::isfinite(m.computeObservationLikelihood(scan, pose)));
+		EXPECT_EQ(m.computeObservationLikelihood(scan, pose), emptyScore);
 		m.setSize(-2, 2, -2, 2, 0.1);
 		EXPECT_TRUE(m.insertObservation(scan, pose));
 		EXPECT_GT(m.countDecisions().occupied, 0u);
