@@ -4,10 +4,14 @@
  * cell. */
 #include <gtest/gtest.h>
 #include <mrpt/obs/CObservation3DRangeScan.h>
+#include <mrpt/img/CImage.h>
 #include <mrpt/obs/CObservationRotatingScan.h>
+#include <mrpt/obs/CObservationVelodyneScan.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <utility>
@@ -16,6 +20,7 @@
 #include "cloud/GroundPlane.h"
 #include "support/clouds.h"
 #include "support/map_bytes.h"
+#include "support/test_helpers.h"
 
 using namespace mrpt_evidential;
 using mrpt::math::TPoint3Df;
@@ -284,18 +289,97 @@ TEST(Clouds, EmptyCloudsInsertNothing)
 	EXPECT_EQ(map.countDecisions().free + map.countDecisions().occupied, 0u);
 }
 
-TEST(Clouds, DepthFrameThatDoesNotFitItsCameraIsRefused)
+namespace
 {
-	// A range image of 64 x 48 pixels with the default camera (640 x 480):
-	// MRPT's assertion becomes the map's std::invalid_argument.
+/** The text of the std::invalid_argument that inserting `obs` throws, or ""
+ * if it throws none. */
+std::string refusal(CEvidentialGridMap2D& map, const mrpt::obs::CObservation& obs)
+{
+	try
+	{
+		map.insertObservation(obs, CPose3D());
+	}
+	catch (const std::invalid_argument& e)
+	{
+		return e.what();
+	}
+	return "";
+}
+
+/** A Velodyne scan of raw packets only, each block's returns at 2 m. The
+ * packet's fields are private in MRPT, written as the wire's bytes
+ * (little-endian: a block's header, its rotation, then 3 bytes a return). */
+mrpt::obs::CObservationVelodyneScan rawVelodyneScan()
+{
+	using Scan = mrpt::obs::CObservationVelodyneScan;
+	Scan scan;
+	scan.scan_packets.resize(3);
+	for (auto& packet : scan.scan_packets)
+		for (auto& block : packet.blocks)
+		{
+			auto* bytes = reinterpret_cast<std::uint8_t*>(&block);
+			const std::uint16_t header = Scan::UPPER_BANK, rotation = 1000, distance = 1000;
+			std::memcpy(bytes, &header, 2);
+			std::memcpy(bytes + 2, &rotation, 2);
+			for (int laser = 0; laser < Scan::SCANS_PER_BLOCK; ++laser)
+			{
+				std::memcpy(bytes + 4 + 3 * laser, &distance, 2);
+				bytes[6 + 3 * laser] = 5;
+			}
+		}
+	return scan;
+}
+}  // namespace
+
+TEST(Clouds, UndecodableDepthAndVelodyneFramesThrowNamingTheCause)
+{
+	// MRPT's own assertions (or a silent empty image) become the map's
+	// std::invalid_argument, whose text says what is missing.
 	CEvidentialGridMap2D map = makeMap();
+
+	// A range image of 64 x 48 pixels with the default camera (640 x 480).
 	mrpt::obs::CObservation3DRangeScan frame;
 	frame.hasRangeImage = true;
 	frame.rangeImage_setSize(48, 64);
 	frame.rangeImage.fill(1000);
 	frame.rangeUnits = 0.001f;
-	EXPECT_THROW(map.insertObservation(frame, CPose3D()), std::invalid_argument);
-	EXPECT_EQ(map.insertionCount(), 0u);
+	EXPECT_NE(refusal(map, frame).find("(64 x 48) does not fit"), std::string::npos);
+
+	// A fitting image kept in a file beside the rawlog: read when MRPT is told
+	// where such files are, named when it cannot be read.
+	const auto dir = test::scratchDir("clouds", "external_depth");
+	mrpt::obs::CObservation3DRangeScan stored;
+	stored.hasRangeImage = true;
+	stored.rangeImage_setSize(20, 20);
+	stored.rangeImage.fill(3000);
+	stored.rangeUnits = 0.001f;
+	stored.cameraParams.ncols = 20;
+	stored.cameraParams.nrows = 20;
+	stored.cameraParams.fx(10);
+	stored.cameraParams.fy(10);
+	stored.cameraParams.cx(10);
+	stored.cameraParams.cy(10);
+	stored.sensorPose = CPose3D(0, 0, 1.0, 0, 0, 0);
+	stored.rangeImage_convertToExternalStorage("range.bin", dir.string() + "/");
+	const std::string before = mrpt::img::CImage::getImagesPathBase();
+	mrpt::img::CImage::setImagesPathBase((dir / "elsewhere").string());
+	const std::string missing = refusal(map, stored);
+	EXPECT_NE(missing.find("stored apart in"), std::string::npos) << missing;
+	EXPECT_NE(missing.find("range.bin"), std::string::npos) << missing;
+	mrpt::img::CImage::setImagesPathBase(dir.string());
+	const std::string found = refusal(map, stored);
+	mrpt::img::CImage::setImagesPathBase(before);
+	EXPECT_EQ(found, "");
+	EXPECT_EQ(at(map, 3.05, 0.0), Decision::Occupied);
+	EXPECT_EQ(map.insertionCount(), 1u);
+
+	// Raw Velodyne packets with no calibration, and with one that has fewer
+	// lasers than the packets fire.
+	mrpt::obs::CObservationVelodyneScan velodyne = rawVelodyneScan();
+	EXPECT_NE(refusal(map, velodyne).find("without the calibration"), std::string::npos);
+	velodyne.calibration.laser_corrections.resize(1);
+	EXPECT_NE(refusal(map, velodyne).find("cannot decode"), std::string::npos);
+	EXPECT_EQ(map.insertionCount(), 1u);
 }
 
 TEST(Clouds, CloudsOfAnySizeInTurnReadAsIntoANewMap)

@@ -164,6 +164,25 @@ TEST(MapIni, DefaultsWhenSectionsAreAbsent)
 	EXPECT_EQ(map->maxCells(), CEvidentialGridMap2D::kDefaultMaxCells);
 }
 
+TEST(MapIni, AValueMayBeFollowedByAComment)
+{
+	const auto maps = mapsFrom(
+		"[Map]\nevidentialGrid_count=1\n[Map_evidentialGrid_00_insertOpts]\n"
+		"muO = 0.95   # the occupied mass\nmuF=0.55 ; the free mass\n"
+		"maxRange = 12 // MRPT's own comment\n"
+		"[Map_evidentialGrid_00_renderOpts]\nfreeColor = #112233 ; grey-blue\n");
+	const auto map = maps.mapByClass<CEvidentialGridMap2D>();
+	ASSERT_TRUE(map);
+	EXPECT_EQ(map->insertionOptions.muO, 0.95);
+	EXPECT_EQ(map->insertionOptions.muF, 0.55);
+	EXPECT_EQ(map->insertionOptions.maxRange, 12.0);
+	EXPECT_EQ(map->renderingOptions.freeColor, mrpt::img::TColor(0x11, 0x22, 0x33));
+	EXPECT_NE(
+		loadError("[Map]\nevidentialGrid_count=1\n[Map_evidentialGrid_00_insertOpts]\nmuO=0,95\n")
+			.find("the decimal mark is a point"),
+		std::string::npos);
+}
+
 TEST(MapIni, InsertionOptionsRoundTripThroughIni)
 {
 	CEvidentialGridMap2D::TInsertionOptions o;
@@ -286,6 +305,14 @@ TEST(MapIni, InvalidValuesAreRejectedNamingKeyAndValue)
 		// Valid alone, but more than 1e7 range bins of the grid's 0.10 m
 		// cells: refused when read, not at the first scan.
 		{"insertOpts", "maxRange=2e6"},
+		// A decimal comma, or more than one value: a reader that stopped at
+		// the first comma or space would take 0, 1 and 0.6.
+		{"insertOpts", "muO=0,95"},
+		{"insertOpts", "maxRange=1,5"},
+		{"insertOpts", "muF=0.6 0.7"},
+		{"insertOpts", "sensorModel=Reinforced MultiEcho"},
+		{"renderOpts", "freeColor=#112233,#445566"},
+		{"creationOpts", "resolution=0,05"},
 	};
 	for (const auto& [section, line] : bad)
 	{

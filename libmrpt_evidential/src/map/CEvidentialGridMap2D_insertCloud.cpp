@@ -94,9 +94,24 @@ std::optional<mrpt::poses::CPose3D> CEvidentialGridMap2D::cloudInRobotFrame(
 		else
 		{
 			// Raw packets only: decode them with the scan's calibration, on
-			// a copy (decoding writes the observation).
+			// a copy (decoding writes the observation). MRPT asserts on
+			// packets its calibration has no laser for.
+			if (o->calibration.empty())
+				throw std::invalid_argument(
+					"a Velodyne scan of raw packets without the calibration that "
+					"decodes them (and no point_cloud)");
 			mrpt::obs::CObservationVelodyneScan decoded(*o);
-			decoded.generatePointCloud();
+			try
+			{
+				decoded.generatePointCloud();
+			}
+			catch (const std::exception&)
+			{
+				throw std::invalid_argument(
+					"a Velodyne scan whose raw packets its calibration (" +
+					std::to_string(o->calibration.laser_corrections.size()) +
+					" lasers) cannot decode");
+			}
 			pointsOf(
 				decoded.point_cloud.x, decoded.point_cloud.y, decoded.point_cloud.z, o->sensorPose,
 				points);
@@ -119,10 +134,16 @@ std::optional<mrpt::poses::CPose3D> CEvidentialGridMap2D::cloudInRobotFrame(
 			}
 			catch (const std::exception&)
 			{
+				if (o->rangeImage_isExternallyStored() && copy.rangeImage.cols() == 0)
+					throw std::invalid_argument(
+						"a depth frame whose range image, stored apart in '" +
+						o->rangeImage_getExternalStorageFileAbsolutePath("") +
+						"', cannot be read (a rawlog's external files are looked "
+						"for where mrpt::img::CImage::setImagesPathBase() says)");
 				throw std::invalid_argument(
 					"a depth frame that cannot be unprojected: its range image (" +
-					std::to_string(o->rangeImage.cols()) + " x " +
-					std::to_string(o->rangeImage.rows()) +
+					std::to_string(copy.rangeImage.cols()) + " x " +
+					std::to_string(copy.rangeImage.rows()) +
 					") does not fit its camera parameters (" +
 					std::to_string(o->cameraParams.ncols) + " x " +
 					std::to_string(o->cameraParams.nrows) + ")");

@@ -247,7 +247,11 @@ void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 
 void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 {
-	if (version > 5) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+	// Said in words: a fleet whose robots run different releases meets it.
+	if (version > 5)
+		throw std::runtime_error(
+			"CEvidentialGridMap2D: a map of format version " + std::to_string(version) +
+			", saved by a newer mrpt-evidential; this one reads versions 0 to 5");
 
 	// Everything goes into locals: the map changes only once all is read,
 	// checked and validated.

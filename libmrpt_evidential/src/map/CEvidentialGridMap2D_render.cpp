@@ -36,24 +36,45 @@ constexpr std::array<std::pair<CellClass, const char*>, 6> kObjects{{
 	{CellClass::Appeared, "appeared"},
 }};
 const char* kPathName = "path";
+/** The longest side of a class's rectangles, in cells (rectanglesOf()). */
+constexpr int kMaxRectangleSide = 64;
 const mrpt::img::TColor kPathColor{0xE0, 0x20, 0x20};
+
+/** Where a 3-D object whose vertices start at (x, y) is placed: a pose on
+ * a lattice of 64 m, and the rest, which its vertices add. Vertices in
+ * world coordinates would lose cells from 1e6 m (UTM) on, and MRPT's
+ * .3Dscene files keep a pose in floats: a pose that floats cannot hold would
+ * move the map by up to half a metre in a file. Multiples of 64 m are
+ * floats exactly within the grid's 1e9 m (64 x 2^24 m). (Rounding the pose to a float
+ * instead is what GCC 12's vectorizer compiled away, at -O2.) */
+struct TObjectOrigin
+{
+	double x, y;  //!< The pose.
+	float dx, dy;  //!< (x, y) from the pose: in [0, 64) m.
+};
+TObjectOrigin objectOrigin(double x, double y)
+{
+	constexpr double kLattice = 64.0;
+	const double px = std::floor(x / kLattice) * kLattice,
+				 py = std::floor(y / kLattice) * kLattice;
+	return {px, py, static_cast<float>(x - px), static_cast<float>(y - py)};
+}
 
 /** A plane of `image` (row 0 at yMin) and its transparency over the grid
  * `g`, unlit, at height z. */
 mrpt::opengl::CTexturedPlane::Ptr makePlane(
 	const GridGeometry& g, double z, mrpt::img::CImage&& image, mrpt::img::CImage&& alpha)
 {
-	// Corners from the grid's origin, which the plane's pose (doubles) holds:
-	// floats of world coordinates lose cells from 1e6 m (UTM) on.
+	const TObjectOrigin o = objectOrigin(g.xMin, g.yMin);
 	auto plane = mrpt::opengl::CTexturedPlane::Create(
-		0.0f, static_cast<float>(g.sizeX * g.resolution), 0.0f,
-		static_cast<float>(g.sizeY * g.resolution));
+		o.dx, o.dx + static_cast<float>(g.sizeX * g.resolution), o.dy,
+		o.dy + static_cast<float>(g.sizeY * g.resolution));
 	plane->assignImage(std::move(image), std::move(alpha));
 	// Unlit, so that the colour on screen is the option's (MRPT 2.14's
 	// default; MRPT 2.5.8 lights planes).
 	plane->CRenderizableShaderTexturedTriangles::enableLight(false);
 	plane->CRenderizableShaderTriangles::enableLight(false);
-	plane->setLocation(g.xMin, g.yMin, z);
+	plane->setLocation(o.x, o.y, z);
 	return plane;
 }
 }  // namespace
@@ -227,30 +248,31 @@ void CEvidentialGridMap2D::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) 
 		return ro.showUnknown;
 	};
 	const float z = static_cast<float>(ro.height);
+	const TObjectOrigin origin = objectOrigin(g.xMin, g.yMin);
 	for (const auto& [cls, suffix] : kObjects)
 	{
 		if (!shown(cls)) continue;
 		const auto rects = detail::rectanglesOf(
-			classes, g.sizeX, g.sizeY, static_cast<std::uint8_t>(cls));
+			classes, g.sizeX, g.sizeY, static_cast<std::uint8_t>(cls), kMaxRectangleSide);
 		if (rects.empty()) continue;
 		auto triangles = mrpt::opengl::CSetOfTriangles::Create();
 		triangles->setName(name + suffix);
-		// Vertices from the grid's origin, held by the pose in doubles (see
-		// makePlane()).
-		triangles->setLocation(g.xMin, g.yMin, 0.0);
+		triangles->setLocation(origin.x, origin.y, 0.0);
 		// Unlit, so that the colour on screen is the option's.
 		triangles->enableLight(false);
 		triangles->reserve(2 * rects.size());
 		const mrpt::img::TColor c = ro.colorOf(cls);
-		// Rectangles meet at T-junctions, where rasterization leaves cracks
-		// of a pixel: each overlaps its neighbours by a fiftieth of a cell.
-		const double seam = 0.02 * g.resolution;
+		// Rectangles meet at T-junctions, where Mesa's rasterizer leaves
+		// cracks of a pixel unless they overlap by about a pixel: each
+		// overlaps its neighbours by a tenth of a cell (a fiftieth left
+		// 4,000 to 8,000 background pixels in a view of 800 x 600).
+		const double seam = 0.1 * g.resolution;
 		for (const auto& r : rects)
 		{
-			const auto x0 = static_cast<float>(r.cx0 * g.resolution - seam);
-			const auto x1 = static_cast<float>((r.cx1 + 1) * g.resolution + seam);
-			const auto y0 = static_cast<float>(r.cy0 * g.resolution - seam);
-			const auto y1 = static_cast<float>((r.cy1 + 1) * g.resolution + seam);
+			const auto x0 = origin.dx + static_cast<float>(r.cx0 * g.resolution - seam);
+			const auto x1 = origin.dx + static_cast<float>((r.cx1 + 1) * g.resolution + seam);
+			const auto y0 = origin.dy + static_cast<float>(r.cy0 * g.resolution - seam);
+			const auto y1 = origin.dy + static_cast<float>((r.cy1 + 1) * g.resolution + seam);
 			for (const auto& [p, q, w] :
 				 {std::array{mrpt::math::TPoint3Df(x0, y0, z), mrpt::math::TPoint3Df(x1, y0, z),
 							 mrpt::math::TPoint3Df(x1, y1, z)},
@@ -282,10 +304,13 @@ void CEvidentialGridMap2D::saveAsScene(
 		lines->setLineWidth(2.0f);
 		// Above the map's planes (renderingOptions.height), whatever the path's own z.
 		const double lift = renderingOptions.height + 0.01;
+		// From the path's start, as the map's objects are placed.
+		const TObjectOrigin o = objectOrigin(path[0].x, path[0].y);
+		lines->setLocation(o.x, o.y, 0.0);
 		for (std::size_t i = 1; i < path.size(); ++i)
 			lines->appendLine(
-				path[i - 1].x, path[i - 1].y, std::max(path[i - 1].z, lift), path[i].x, path[i].y,
-				std::max(path[i].z, lift));
+				path[i - 1].x - o.x, path[i - 1].y - o.y, std::max(path[i - 1].z, lift),
+				path[i].x - o.x, path[i].y - o.y, std::max(path[i].z, lift));
 		scene.insert(lines);
 	}
 	detail::writeFileAtomicallyByName(

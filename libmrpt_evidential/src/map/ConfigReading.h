@@ -34,12 +34,22 @@ namespace mrpt_evidential::detail
 		"[" + section + "] " + key + " = '" + value + "': " + expected);
 }
 
-/** The first word of a key, or "" when absent. */
+/** A key's value, or "" when absent: one word, which may be followed by a
+ * comment after `#` or `;` (MRPT itself strips `//` comments). MRPT's
+ * read_string_first_word() would cut "0,95" at its comma and read 0.
+ * \throws std::invalid_argument if other text follows the value. */
 inline std::string readWord(
 	const mrpt::config::CConfigFileBase& source, const std::string& section,
 	const std::string& key)
 {
-	return source.read_string_first_word(section, key, "", false);
+	const std::string text = source.read_string(section, key, "", false);
+	const auto end = text.find_first_of(" \t");
+	if (end == std::string::npos) return text;
+	const auto next = text.find_first_not_of(" \t", end);
+	if (next != std::string::npos && text[next] != '#' && text[next] != ';')
+		throwBadValue(
+			section, key, text, "one value, then at most a comment after # or ;");
+	return text.substr(0, end);
 }
 
 /** A key's value for a message: as the file writes it, or `value` when the
@@ -77,7 +87,11 @@ inline void readDouble(
 	errno = 0;
 	const double v = std::strtod(text.c_str(), &end);
 	if (end == text.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
-		throwBadValue(section, key, text, "not a finite number");
+		throwBadValue(
+			section, key, text,
+			text.find(',') == std::string::npos
+				? "not a finite number"
+				: "not a finite number (the decimal mark is a point)");
 	value = v;
 }
 

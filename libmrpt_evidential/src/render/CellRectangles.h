@@ -16,8 +16,12 @@ struct CellRectangle
 
 /** Rectangles that cover exactly the cells of `labels` (sizeX x sizeY, row
  * by row from cy = 0) equal to `label`, none overlapping: the runs of each
- * row, a run extended upwards while the next row has the same run. */
+ * row, cut every `maxSide` cells, a run extended upwards while the next row
+ * has the same run, up to `maxSide` rows. (Slivers hundreds of cells long
+ * leave cracks of a pixel between them where Mesa's rasterizer clips them.)
+ * \throws std::invalid_argument if maxSide < 1. */
 std::vector<CellRectangle> rectanglesOf(
-	const std::vector<std::uint8_t>& labels, int sizeX, int sizeY, std::uint8_t label);
+	const std::vector<std::uint8_t>& labels, int sizeX, int sizeY, std::uint8_t label,
+	int maxSide);
 
 }  // namespace mrpt_evidential::detail
