@@ -10,9 +10,12 @@
 #include <mrpt/obs/CObservationPointCloud.h>
 #include <mrpt/obs/CObservationVelodyneScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/img/CImage.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose3DPDF.h>
 
+#include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 #include "CScopedTimer.h"
@@ -21,9 +24,35 @@ namespace evgrid
 {
 using Holder = CPoseSource::Holder;
 
+namespace
+{
+/** Where depth frames and images of a rawlog keep their external files:
+ * `NAME_Images` beside `NAME.rawlog` (also for `NAME.rawlog.gz`), else an
+ * `Images` folder beside it, as rawlog-grabber writes them. MRPT 2.5.8's
+ * CRawlog::detectImagesDirectory() misses the first. */
+std::optional<std::string> externalFilesFolder(const std::string& input)
+{
+	namespace fs = std::filesystem;
+	const fs::path file(input);
+	std::error_code error;
+	for (fs::path stem = file.stem();; stem = stem.stem())
+	{
+		const fs::path candidate =
+			file.parent_path() / fs::path(stem.string() + "_Images");
+		if (fs::is_directory(candidate, error)) return candidate.string();
+		if (!stem.has_extension()) break;
+	}
+	const fs::path shared = file.parent_path() / "Images";
+	if (fs::is_directory(shared, error)) return shared.string();
+	return std::nullopt;
+}
+}  // namespace
+
 CInputWalker::CInputWalker(const std::string& path, CPoseSource& poses)
 	: m_path(path), m_poses(poses), m_reader(path)
 {
+	if (const auto folder = externalFilesFolder(path))
+		mrpt::img::CImage::setImagesPathBase(*folder);
 	readNext();
 	if (!m_object) throw std::runtime_error(m_path + ": the file is empty");
 	m_counts.compressed = m_reader.isCompressed();

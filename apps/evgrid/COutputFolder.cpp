@@ -70,24 +70,60 @@ void COutputFolder::commit(const std::vector<std::string>& names)
 {
 	// Ctrl-C while the outputs were written: nothing moves into place.
 	throwIfStopRequested();
+	// Checked before anything moves: an entry of the other kind where ours
+	// goes (a folder named map.png) is the user's, not ours to remove.
+	std::vector<std::string> toMove;
 	for (const std::string& name : names)
 	{
-		const std::string from = staged(name), to = final(name);
 		std::error_code ec;
+		const fs::path from = staged(name), to = final(name);
 		if (!fs::exists(from, ec)) continue;
-		if (fs::is_directory(from, ec))
-		{
-			// A folder cannot be renamed over a non-empty one: the old one
-			// goes into the staging folder (removed below) first.
-			if (fs::exists(to, ec))
-				fs::rename(to, staged(".replaced-" + name), ec);
-			if (!ec) fs::rename(from, to, ec);
-		}
-		else
-			fs::rename(from, to, ec);
-		if (ec)
+		const auto old = fs::symlink_status(to, ec);  // not_found when absent
+		if (fs::exists(old) && fs::is_directory(old) != fs::is_directory(from, ec))
 			throw std::runtime_error(
-				to + ": cannot be replaced: " + ec.message());
+				to.string() + ": cannot be replaced: " +
+				(fs::is_directory(old) ? "it is a folder" : "it is not a folder"));
+		toMove.push_back(name);
+	}
+	// Each old entry moves aside into the staging folder (removed below),
+	// then the new one into place. When a step fails, the steps done are
+	// undone in reverse: the folder is left as it was, not half new.
+	struct TStep
+	{
+		std::string name;
+		bool movedAside = false, placed = false;
+	};
+	std::vector<TStep> done;
+	const auto aside = [this](const std::string& name) { return staged(".replaced-" + name); };
+	const auto undo = [&]() {
+		for (auto step = done.rbegin(); step != done.rend(); ++step)
+		{
+			std::error_code ignored;
+			if (step->placed) fs::rename(final(step->name), staged(step->name), ignored);
+			if (step->movedAside) fs::rename(aside(step->name), final(step->name), ignored);
+		}
+	};
+	for (const std::string& name : toMove)
+	{
+		const std::string to = final(name);
+		TStep step{name};
+		std::error_code ec, absent;
+		if (fs::exists(fs::symlink_status(to, absent)))
+		{
+			fs::rename(to, aside(name), ec);
+			step.movedAside = !ec;
+		}
+		if (!ec)
+		{
+			fs::rename(staged(name), to, ec);
+			step.placed = !ec;
+		}
+		done.push_back(step);
+		if (ec)
+		{
+			undo();
+			throw std::runtime_error(to + ": cannot be replaced: " + ec.message());
+		}
 	}
 	std::error_code ignored;
 	fs::remove_all(m_staging, ignored);

@@ -8,8 +8,8 @@ namespace evgrid
 {
 /** The output folder of `evgrid build`. Everything a run writes goes first
  * into a hidden staging folder inside it (same file system, so a rename is
- * atomic); commit() then renames each staged file over the old one and
- * swaps staged folders (frames/) with the old ones as a whole. A run that
+ * atomic); commit() then moves each old entry aside and the staged one
+ * into its place, files and folders (frames/) alike. A run that
  * fails before commit() leaves the folder as it was: the destructor removes
  * the staging folder. */
 class COutputFolder
@@ -33,10 +33,12 @@ class COutputFolder
 	std::string final(const std::string& name) const;
 
 	/** Moves the staged entries `names` into place, in that order (put the
-	 * file that marks a complete run last), then removes the staging folder.
-	 * Names not staged are skipped. \throws std::runtime_error naming the
-	 * entry that cannot be moved, or before moving any if a stop was
-	 * requested (throwIfStopRequested()). */
+	 * file that marks a complete run last), then removes the staging folder
+	 * with the entries they replaced. Names not staged are skipped. All or
+	 * nothing: when an entry cannot be moved, those moved are put back.
+	 * \throws std::runtime_error naming the entry that cannot be replaced
+	 *  (a folder where a file goes, or the reverse, before any moves), or
+	 *  before moving any if a stop was requested (throwIfStopRequested()). */
 	void commit(const std::vector<std::string>& names);
 
    private:

@@ -109,23 +109,49 @@ std::string describe(const std::exception& e)
 	// ...\nCall stack backtrace: ...", nested ones repeated inside; the last
 	// "Message:" is the original cause, unless an "Original exception:" line
 	// follows it with a plain exception's text (a class's deserializer that
-	// threw while MRPT read the object).
+	// threw while MRPT read the object). A message may take several lines
+	// (an ASSERT_ prints its operands on their own). MRPT reads a message
+	// that starts "[...]" as a location: the library's .ini errors start with
+	// their section, which MRPT then prints as "Location: [section", without
+	// its "]"; it is put back in front.
 	const std::string what = e.what();
 	std::istringstream lines(what);
 	std::string line, message;
-	const std::string tag = "Message:";
+	const std::string messageTag = "Message:", locationTag = "Location:";
+	bool inMessage = false;
+	const auto startsWith = [&line](const std::string& tag) {
+		return line.compare(0, tag.size(), tag) == 0;
+	};
 	while (std::getline(lines, line))
 	{
 		if (line == "Original exception:")
 		{
-			if (std::getline(lines, line) && !line.empty() &&
-				line.rfind("====", 0) != 0)
+			inMessage = false;
+			if (std::getline(lines, line) && !line.empty() && line.rfind("====", 0) != 0)
 				message = line;
 			continue;
 		}
-		if (line.compare(0, tag.size(), tag) != 0) continue;
-		const auto start = line.find_first_not_of(' ', tag.size());
-		if (start != std::string::npos) message = line.substr(start);
+		if (startsWith(messageTag))
+		{
+			const auto start = line.find_first_not_of(' ', messageTag.size());
+			message = start == std::string::npos ? "" : line.substr(start);
+			inMessage = true;
+		}
+		else if (startsWith(locationTag))
+		{
+			inMessage = false;
+			const auto start = line.find_first_not_of(' ', locationTag.size());
+			const std::string location =
+				start == std::string::npos ? "" : line.substr(start);
+			if (location.size() > 1 && location[0] == '[' &&
+				location.find(']') == std::string::npos)
+				message = location + "] " + message;
+		}
+		else if (inMessage && !line.empty() && line.rfind("====", 0) != 0 &&
+				 !startsWith("Call stack"))
+			message += " " + line;
+		else
+			inMessage = false;
 	}
 	return message.empty() ? what : message;
 }

@@ -115,6 +115,11 @@ int runDiff(int argc, char** argv, int first)
 		   << " cells\ndisappeared: " << changes.disappeared.size() << " cells\n";
 	});
 	out.commit({"changes.png", "appeared.txt", "disappeared.txt", "summary.txt"});
+	// "Nothing changed" and "nothing compared" read the same in the counts.
+	if (changes.compared == 0)
+		std::cerr << kName
+				  << ": warning: no cell was seen by both runs: the maps cover different "
+					 "places, and nothing was compared\n";
 	if (!argQuiet.getValue())
 		std::cout << kName << ": " << changes.compared << " cells seen by both runs; appeared "
 				  << changes.appeared.size() << ", disappeared " << changes.disappeared.size()

@@ -104,6 +104,10 @@ CEvidentialGridMap2D::Ptr loadMap(const std::string& path)
 		throw std::runtime_error(
 			path + ": holds a " + object->GetRuntimeClass()->className +
 			", not an evidential grid map");
+	// Two map files joined (cat a b > c) would read as the first alone.
+	if (reader.next())
+		throw std::runtime_error(
+			path + ": holds more than the map (another object after it: files joined?)");
 	return map;
 }
 

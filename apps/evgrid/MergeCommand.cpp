@@ -2,7 +2,9 @@
 
 #include <mrpt/typemeta/TEnumType.h>
 
+#include <filesystem>
 #include <iostream>
+#include <set>
 #include <stdexcept>
 #include <vector>
 
@@ -90,6 +92,11 @@ int runMerge(int argc, char** argv, int first)
 	const std::vector<std::string>& inputs = argMaps.getValue();
 	for (const auto& path : inputs) requireMapFile(path);
 	if (inputs.size() < 2) throw UsageError("give two or more maps to merge");
+	// A run fused with itself counts its evidence twice.
+	std::set<std::filesystem::path> seen;
+	for (const auto& path : inputs)
+		if (!seen.insert(std::filesystem::weakly_canonical(path)).second)
+			throw UsageError(path + " is given twice: a run merged with itself counts its evidence twice");
 	if (argOut.getValue().empty()) throw UsageError("missing the output folder: -o DIR");
 	const auto rule = enumNamed<FusionRule>("--rule", argRule.getValue());
 	const auto handling = enumNamed<ConflictHandling>("--conflict-handling", argHandling.getValue());

@@ -4,9 +4,11 @@
 
 #include <mrpt/serialization/CArchive.h>
 
+#include <filesystem>
 #include <stdexcept>
 
 #include "SimulationClock.h"
+#include "StopSignal.h"
 
 namespace mrpt_evidential::simulate
 {
@@ -21,6 +23,7 @@ CSceneFiles::CSceneFiles(
 		  scans)
 {
 	const std::string path = prefix + ".rawlog";
+	m_rawlogName = std::filesystem::path(path).filename().string();
 	if (std::string error; !m_rawlog.open(path, 9, error))
 		throw std::runtime_error("cannot write " + path + ": " + error);
 }
@@ -30,8 +33,18 @@ void CSceneFiles::writeScan(
 	const mrpt::obs::CActionCollection& actions,
 	const mrpt::obs::CSensoryFrame& frame)
 {
+	evgrid::throwIfStopRequested("no file was written");
 	const double time = kStartTime + static_cast<double>(k) / kRate;
-	mrpt::serialization::archiveFrom(m_rawlog) << actions << frame;
+	try
+	{
+		mrpt::serialization::archiveFrom(m_rawlog) << actions << frame;
+	}
+	catch (const std::exception&)
+	{
+		// MRPT's message names no file.
+		throw std::runtime_error(
+			"cannot write " + m_rawlogName + " (is the disk full?); no file was written");
+	}
 	m_truth.write(time, pose);
 	m_slam.write(time, m_slamError.estimate(pose));
 	m_motion.writeScan(k);

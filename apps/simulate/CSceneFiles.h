@@ -31,7 +31,8 @@ class CSceneFiles
 	/** Writes scan k (in order from 0): the action and the frame to the
 	 * rawlog, the robot's true pose and its SLAM-like estimate, and what
 	 * moves up to the scan's time.
-	 * \throws std::runtime_error if a file cannot be written. */
+	 * \throws std::runtime_error if a file cannot be written, or once a stop
+	 *  was requested (evgrid::catchStopSignals()). */
 	void writeScan(
 		std::size_t k, const mrpt::poses::CPose2D& pose,
 		const mrpt::obs::CActionCollection& actions,
@@ -42,6 +43,7 @@ class CSceneFiles
 
    private:
 	mrpt::io::CFileGZOutputStream m_rawlog;
+	std::string m_rawlogName;  //!< Its file name, for messages.
 	CPoseWriter m_truth, m_slam;
 	CSlamError m_slamError;
 	CMotionTruthWriter m_motion;

@@ -28,7 +28,7 @@ constexpr const char* kSceneName = "street";
 constexpr unsigned int kOdometryStream = 0x0d0du, kLidarStream = 0x3d1du;
 }  // namespace
 
-void simulateStreet(const TStreetRunOptions& options)
+std::string simulateStreet(const TStreetRunOptions& options)
 {
 	TLidarOptions lidarOptions;
 	lidarOptions.elevations =
@@ -84,12 +84,11 @@ void simulateStreet(const TStreetRunOptions& options)
 	}
 	files.close();
 	truth3D.close();
-	std::printf(
-		"evgrid-simulate: scene %s, %zu scans, %g s, %zu points a scan on "
-		"average: %s.{rawlog,gt.txt,gt3d.txt,slam.txt,motion.gz,"
-		"footprint.gz}\n",
-		kSceneName, steps, static_cast<double>(steps) / kRate,
-		steps ? points / steps : 0, prefix.c_str());
+	char what[160];
+	std::snprintf(
+		what, sizeof(what), "scene %s, %zu scans, %g s, %zu points a scan on average",
+		kSceneName, steps, static_cast<double>(steps) / kRate, steps ? points / steps : 0);
+	return what;
 }
 
 }  // namespace mrpt_evidential::simulate

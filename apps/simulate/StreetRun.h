@@ -26,9 +26,9 @@ struct TStreetRunOptions
  * PREFIX.gt3d.txt (the vehicle's true 3-D pose), PREFIX.slam.txt,
  * PREFIX.motion.gz (what moves, as for every scene) and
  * PREFIX.footprint.gz (the static footprint truth). Every noise comes from
- * the seed. Prints what it wrote.
+ * the seed. Returns what they hold ("scene street, N scans, ...").
  * \throws std::runtime_error if a file cannot be written,
  * std::invalid_argument for bad lidar options. */
-void simulateStreet(const TStreetRunOptions& options);
+std::string simulateStreet(const TStreetRunOptions& options);
 
 }  // namespace mrpt_evidential::simulate

@@ -6,19 +6,24 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/random/RandomGenerators.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "COutputFolder.h"
 #include "CRoomScene.h"
 #include "CSceneFiles.h"
 #include "CSlamError.h"
 #include "Odometry.h"
 #include "SceneCatalog.h"
 #include "SimulationClock.h"
+#include "StopSignal.h"
 #include "StreetRun.h"
 
 namespace sim = mrpt_evidential::simulate;
@@ -292,7 +297,8 @@ int parseCommandLine(int argc, char** argv, TOptions& opts)
 	return -1;
 }
 
-void simulateRoom(const TOptions& opts)
+/** Writes the room's files under `prefix`; returns what they hold. */
+std::string simulateRoom(const TOptions& opts, const std::string& prefix)
 {
 	// The laser simulator draws its noise from MRPT's global generator: seed
 	// it, and draw the odometry noise from it too, so one seed fixes all.
@@ -303,7 +309,7 @@ void simulateRoom(const TOptions& opts)
 		sim::findScene(opts.scene)->make();
 	const auto steps = static_cast<std::size_t>(
 		std::lround(opts.laps * scene->lapPeriod() * kRate));
-	sim::CSceneFiles files(opts.prefix, opts.seed, *scene, opts.scene, steps);
+	sim::CSceneFiles files(prefix, opts.seed, *scene, opts.scene, steps);
 	mrpt::poses::CPose2D previousPose = scene->robotPoseAt(0.0);
 	for (std::size_t k = 0; k < steps; ++k)
 	{
@@ -333,11 +339,43 @@ void simulateRoom(const TOptions& opts)
 		files.writeScan(k, pose, actions, frame);
 	}
 	files.close();
+	char what[160];
+	std::snprintf(
+		what, sizeof(what), "scene %s, %zu scans, %g s", opts.scene.c_str(), steps,
+		static_cast<double>(steps) / kRate);
+	return what;
+}
+
+/** The files of `prefix`'s run, written into a staging folder beside them
+ * and moved into place once all are complete: a run that fails or is
+ * stopped (Ctrl-C) leaves an earlier run's files as they were. */
+void simulate(TOptions& opts)
+{
+	evgrid::catchStopSignals();
+	const std::filesystem::path prefix(opts.prefix);
+	evgrid::COutputFolder folder(
+		prefix.has_parent_path() ? prefix.parent_path().string() : std::string("."));
+	const std::string staged = folder.staged(prefix.filename().string());
+	std::string what, files;
+	if (opts.scene == kStreet)
+	{
+		opts.street.prefix = staged;
+		opts.street.seed = opts.seed;
+		what = sim::simulateStreet(opts.street);
+		files = "{rawlog,gt.txt,gt3d.txt,slam.txt,motion.gz,footprint.gz}";
+	}
+	else
+	{
+		what = simulateRoom(opts, staged);
+		files = "{rawlog,gt.txt,slam.txt,motion.gz}";
+	}
+	std::vector<std::string> names;
+	for (const auto& entry : std::filesystem::directory_iterator(folder.stagingFolder()))
+		names.push_back(entry.path().filename().string());
+	std::sort(names.begin(), names.end());
+	folder.commit(names);
 	std::printf(
-		"evgrid-simulate: scene %s, %zu scans, %g s: %s.{rawlog,gt.txt,"
-		"slam.txt,motion.gz}\n",
-		opts.scene.c_str(), steps, static_cast<double>(steps) / kRate,
-		opts.prefix.c_str());
+		"evgrid-simulate: %s: %s.%s\n", what.c_str(), opts.prefix.c_str(), files.c_str());
 }
 }  // namespace
 
@@ -348,14 +386,7 @@ int main(int argc, char** argv)
 		return code;
 	try
 	{
-		if (opts.scene == kStreet)
-		{
-			opts.street.prefix = opts.prefix;
-			opts.street.seed = opts.seed;
-			sim::simulateStreet(opts.street);
-		}
-		else
-			simulateRoom(opts);
+		simulate(opts);
 		return 0;
 	}
 	catch (const std::exception& e)

@@ -18,9 +18,28 @@ set -euo pipefail
 config=$1 list=$2 out=$3
 rawlog=$(sed -n "$((SLURM_ARRAY_TASK_ID + 1))p" "$list")
 [ -n "$rawlog" ] || { echo "$list has no line $((SLURM_ARRAY_TASK_ID + 1))" >&2; exit 1; }
-# Slurm runs a copy of this script from its spool: the helper is found from
-# the submission folder's scripts/fleet, or from PATH when installed.
+# Slurm runs a copy of this script from its spool: the helper is found in
+# EVGRID_FLEET_DIR, else in the submission folder's scripts/fleet (a
+# checkout), else in the fleet folder of the installation that holds the
+# evgrid on PATH (PREFIX/share/mrpt-evidential/fleet).
 here=${EVGRID_FLEET_DIR:-$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)}
 [ -f "$here/build-one.sh" ] || here=$SLURM_SUBMIT_DIR/scripts/fleet
+if [ ! -f "$here/build-one.sh" ] && evgrid=$(command -v "${EVGRID:-evgrid}"); then
+  here=$(cd "$(dirname "$evgrid")/.." && pwd)/share/mrpt-evidential/fleet
+fi
+[ -f "$here/build-one.sh" ] || {
+  echo "$0: build-one.sh not found: set EVGRID_FLEET_DIR to the folder of the fleet scripts" >&2
+  exit 1
+}
+# Each task checks that no other line of LIST builds the same folder (two
+# robots' run.rawlog): one would replace the other's map.
+name=$(bash "$here/build-one.sh" --name "$rawlog")
+while IFS= read -r other; do
+  [ -n "$other" ] && [ "$other" != "$rawlog" ] || continue
+  if [ "$(bash "$here/build-one.sh" --name "$other")" = "$name" ]; then
+    echo "$0: $rawlog and $other (in $list) would both build $out/$name/; give them different file names" >&2
+    exit 1
+  fi
+done <"$list"
 mkdir -p "$out"
 exec bash "$here/build-one.sh" "$config" "$out" "$rawlog"

@@ -70,6 +70,12 @@ expect_failure "$DATASETS/kf-slam_demo.rawlog: no scan was inserted (the input h
   -i "$DATASETS/kf-slam_demo.rawlog"
 contains "$ERR" " mrpt::obs::CObservationBearingRange)"
 
+# Every scan beyond the cell budget: nothing of the map seen, an error.
+room=$(dirname "$EVGRID_INI")/room_door_box
+awk '/^%/ { print; next } { printf "%s %.6f %.6f %s\n", $1, $2 + 50000, $3 + 50000, $4 }' \
+  "$room.gt.txt" >"$T/far.txt"
+expect_failure "$room.rawlog: no cell of the map was seen: all " -i "$room.rawlog" -p "$T/far.txt"
+
 # Config files: missing, without an evidential grid, with a bad value, or a
 # section that is not there.
 expect_failure "$T/none.ini: cannot open the config file" -i "$SENA" -c "$T/none.ini"
@@ -78,6 +84,12 @@ expect_failure "$T/no-grid.ini: section [MappingApplication] creates no evidenti
 sed 's/^muF=0.7/muF=1.7/' "$EVGRID_INI" >"$T/bad-value.ini"
 expect_failure "$T/bad-value.ini: " -i "$SENA" -c "$T/bad-value.ini"
 contains "$ERR" "muF"
+# A decimal comma, in the second of two maps: the message names its section
+# (which MRPT's exception moved to its "Location:" line).
+sed 's/^evidentialGrid_count=1/evidentialGrid_count=2/' "$EVGRID_INI" >"$T/two-maps.ini"
+printf '[MappingApplication_evidentialGrid_01_insertOpts]\nmuO=0,95\n' >>"$T/two-maps.ini"
+expect_failure "$T/two-maps.ini: [MappingApplication_evidentialGrid_01_insertOpts] muO = '0,95': not a finite number (the decimal mark is a point)" \
+  -i "$SENA" -c "$T/two-maps.ini"
 expect_failure "$EVGRID_INI: no section [Elsewhere]" -i "$SENA" -c "$EVGRID_INI" -s Elsewhere
 expect_failure "$T: is a directory, not a config file" -i "$SENA" -c "$T"
 # A pipe cannot be read twice (checked in a child, then read).

@@ -1,6 +1,7 @@
 # The fleet recipes of doc/recipes/fleet.md: scripts/fleet/evgrid-parallel.sh
 # builds three simulated rawlogs with GNU parallel and merges them; the Slurm
-# array script, run as one of its tasks would be, builds the same map; a
+# array script, run as one of its tasks would be, builds the same map; odd
+# paths are used as given and rawlogs that would share a folder refused; a
 # failed build stops the fleet before the merge.
 source "$(dirname "$0")/lib.sh"
 fleet="$(dirname "$EVGRID_INI")/../scripts/fleet"
@@ -35,7 +36,29 @@ contains "$ERR" "has no line 8"
 run 1 bash "$fleet/evgrid-slurm-array.sh" "$EVGRID_INI" "$T/list.txt" "$T/slurm"
 contains "$ERR" "not a Slurm array task"
 
-# 3. A damaged rawlog fails its job: the fleet exits non-zero, no merge.
+# 3. Rawlogs in folders whose names hold a space and shell characters, an
+#    output folder too: used as given (parallel joins a command's words into
+#    one shell line). Two rawlogs that would build one folder are refused
+#    before any build, by both scripts. One rawlog: no stale merge is left.
+odd="$T/logs a \$(touch $T/ran) 'b"
+mkdir -p "$odd/one" "$odd/two"
+cp "$T/logs/run1.rawlog" "$odd/one/run.rawlog"
+cp "$T/logs/run2.rawlog" "$odd/two/other.rawlog"
+run 0 env JOBS=2 bash "$fleet/evgrid-parallel.sh" "$EVGRID_INI" "$odd/out" "$odd/one/run.rawlog" "$odd/two/other.rawlog"
+[ ! -e "$T/ran" ] || fail "a path's shell characters were run"
+cmp -s "$odd/out/run/map.evgrid" "$T/slurm/run2/map.evgrid" && fail "the maps of run1 and run2 are the same"
+[ -s "$odd/out/merged/map.evgrid" ] || fail "no merge in a folder with a space"
+cp "$T/logs/run2.rawlog" "$odd/two/run.rawlog"
+run 2 env JOBS=1 bash "$fleet/evgrid-parallel.sh" "$EVGRID_INI" "$T/twice" "$odd/one/run.rawlog" "$odd/two/run.rawlog"
+contains "$ERR" "would both build $T/twice/run/"
+[ ! -e "$T/twice/run" ] || fail "a refused fleet built"
+printf '%s\n' "$odd/one/run.rawlog" "$odd/two/run.rawlog" >"$T/twice.txt"
+run 1 env SLURM_ARRAY_TASK_ID=0 bash "$fleet/evgrid-slurm-array.sh" "$EVGRID_INI" "$T/twice.txt" "$T/twice"
+contains "$ERR" "would both build $T/twice/run/"
+run 0 env JOBS=1 bash "$fleet/evgrid-parallel.sh" "$EVGRID_INI" "$odd/out" "$odd/two/other.rawlog"
+[ ! -e "$odd/out/merged" ] || fail "a fleet of one rawlog left the merge of an earlier run"
+
+# 4. A damaged rawlog fails its job: the fleet exits non-zero, no merge.
 head -c 5000 "$T/logs/run2.rawlog" >"$T/logs/cut.rawlog"
 run 1 env JOBS=1 bash "$fleet/evgrid-parallel.sh" "$EVGRID_INI" "$T/bad" "$T/logs/cut.rawlog" "$T/logs/run1.rawlog"
 [ ! -e "$T/bad/merged" ] || fail "a failed fleet merged"

@@ -75,4 +75,8 @@ contains "$ERR" "$T/damaged.evgrid: entry 0 at byte 0: CEvidentialGridMap2D: cor
 contains "$ERR" "serialized map: checksum mismatch"
 run 1 "$EVGRID" inspect "$T/none.evgrid"
 contains "$ERR" "$T/none.evgrid: cannot open"
+# Two maps joined into one file: not read as the first alone.
+cat "$map" "$map" >"$T/joined.evgrid"
+run 1 "$EVGRID" inspect "$T/joined.evgrid"
+contains "$ERR" "$T/joined.evgrid: holds more than the map (another object after it: files joined?)"
 echo "evgrid_inspect: OK"

@@ -63,16 +63,19 @@ fingerprint() {
 }
 
 # interrupt SIGNAL DIR COMMAND...: runs COMMAND, which writes into the output
-# folder DIR (made empty first), in the background and sends it SIGNAL while
-# its staging folder exists, frozen meanwhile (SIGSTOP, SIGCONT) so that the
-# signal lands before it commits; a run that finishes before its staging
-# folder is seen is tried again. Fails unless the run exits 1 saying so and
-# leaves DIR empty.
+# folder DIR (created if missing), in the background and sends it SIGNAL
+# while its staging folder exists, frozen meanwhile (SIGSTOP, SIGCONT) so
+# that the signal lands before it commits; a run that finishes before its
+# staging folder is seen is tried again (DIR put back as it was). Fails
+# unless the run exits 1 saying so and leaves DIR as it was.
 interrupt() {
-  local signal=$1 dir=$2 pid rc
+  local signal=$1 dir=$2 pid rc kept
   shift 2
+  mkdir -p "$dir"
+  kept=$(fingerprint "$dir")
+  rm -rf "$T/.interrupt-kept" && cp -a "$dir" "$T/.interrupt-kept"
   for _ in $(seq 20); do
-    rm -rf "$dir" && mkdir -p "$dir"
+    rm -rf "$dir" && cp -a "$T/.interrupt-kept" "$dir"
     "$@" </dev/null >"$OUT" 2>"$ERR" &
     pid=$!
     while kill -0 "$pid" 2>/dev/null; do
@@ -81,8 +84,8 @@ interrupt() {
         rc=0
         wait "$pid" || rc=$?
         [ "$rc" -eq 1 ] || fail "interrupted by SIG$signal, exit code $rc: $*"
-        contains "$ERR" "; the output folder is unchanged"
-        [ -z "$(ls -A "$dir")" ] || fail "the interrupted run left $(ls -A "$dir") in $dir: $*"
+        contains "$ERR" "interrupted by signal "
+        [ "$(fingerprint "$dir")" = "$kept" ] || fail "the interrupted run changed $dir: $*"
         return 0
       fi
       sleep 0.01

@@ -20,6 +20,14 @@ sed 's/^conflictHandling=.*/conflictHandling=Normalize/' "$EVGRID_INI" >"$T/norm
 grep -qx "conflictHandling=Normalize" "$T/normalize.ini" || fail "no conflictHandling line in $EVGRID_INI"
 run 0 "$EVGRID_SIMULATE" --scene people --laps 1 "$T/people"
 run 0 "$EVGRID_SIMULATE" --scene static --laps 1 "$T/static"
+# The simulator's files appear together once complete: a run stopped
+# halfway leaves an earlier run's files as they were, and nothing else.
+mkdir -p "$T/sim" && cp "$T"/static.* "$T/sim/"
+interrupt INT "$T/sim" "$EVGRID_SIMULATE" --scene people --laps 20 "$T/sim/static"
+contains "$ERR" "interrupted by signal 2; no file was written"
+run 0 "$EVGRID_SIMULATE" --scene street --duration 0.3 "$T/sim/street"
+[ "$(ls "$T"/sim | tr '\n' ' ')" = "static.gt.txt static.motion.gz static.rawlog static.slam.txt street.footprint.gz street.gt.txt street.gt3d.txt street.motion.gz street.rawlog street.slam.txt " ] ||
+  fail "evgrid-simulate wrote $(ls -A "$T/sim")"
 
 # value KEY FILE: the value of a `key value` line; fails if the key is absent.
 value() {
