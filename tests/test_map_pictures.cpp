@@ -4,10 +4,12 @@
  * test_map_rendering.cpp). */
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <mrpt/img/CImage.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
+#include <mrpt_evidential/support/AtomicFile.h>
 
 #include <algorithm>
 #include <array>
@@ -249,6 +251,26 @@ TEST(MapPictures, OccupancyGridHoldsBetP)
 				<< cx << ", " << cy;
 }
 
+TEST(MapPictures, OccupancyGridFarFromTheOriginHoldsOurCellsOneToOne)
+{
+	// At UTM coordinates MRPT's float cell centres repeat (floats are 0.5 m
+	// apart at 4.2e6 m): sampled there, one row of ours would fill ten of its.
+	const double x0 = 5e5 + 0.35, y0 = -4.2e6 + 0.15;
+	CEvidentialGridMap2D map(x0, x0 + 8.0, y0, y0 + 8.0, 0.05);
+	map.insertionOptions.growthMargin = 0.0;
+	map.insertObservation(
+		test::arcScan(kRays, 2.5, kSetup.at(1.0)), mrpt::poses::CPose3D(x0 + 4.0, y0 + 4.0, 0, 0.3, 0, 0));
+	mrpt::maps::COccupancyGridMap2D grid;
+	map.getAsOccupancyGrid(grid);
+	ASSERT_EQ(grid.getSizeX(), static_cast<unsigned>(map.getSizeX()));
+	ASSERT_EQ(grid.getSizeY(), static_cast<unsigned>(map.getSizeY()));
+	for (int cy = 0; cy < map.getSizeY(); ++cy)
+		for (int cx = 0; cx < map.getSizeX(); ++cx)
+			ASSERT_NEAR(
+				1.0 - grid.getCell(cx, cy), betP(map.getCellMassesByIndex(cx, cy)), 0.02)
+				<< cx << ", " << cy;
+}
+
 TEST(MapPictures, OccupancyGridWithAnUnalignedOrigin)
 {
 	// COccupancyGridMap2D snaps its bounds to multiples of the resolution:
@@ -307,6 +329,14 @@ TEST(MapPictures, RosMapFiles)
 	EXPECT_NE(yaml.find("negate: 0\n"), std::string::npos) << yaml;
 	EXPECT_NE(yaml.find("occupied_thresh: 0.65\n"), std::string::npos) << yaml;
 	EXPECT_NE(yaml.find("free_thresh: 0.196\n"), std::string::npos) << yaml;
+
+	// Numbers with an exponent keep a point: YAML 1.1 (PyYAML) reads "1e+06"
+	// as a string.
+	const CEvidentialGridMap2D far(1e6, 1e6 + 0.01, -4.2e6, -4.2e6 + 0.01, 5e-5);
+	far.saveAsROSMap((dir / "far").string());
+	const std::string farYaml = readText(dir / "far.yaml");
+	EXPECT_NE(farYaml.find("resolution: 5.0e-05\n"), std::string::npos) << farYaml;
+	EXPECT_NE(farYaml.find("origin: [1.0e+06, -4200000, 0.0]\n"), std::string::npos) << farYaml;
 }
 
 TEST(MapPictures, SavedRepresentationWritesEightFilesAndNoTemporary)
@@ -358,6 +388,42 @@ TEST(MapPictures, GeometryTextGivesLengthsToTheNanometre)
 	EXPECT_NE(text.find("  x: [-0.3, 0.7] m\n"), std::string::npos) << text;
 	EXPECT_NE(text.find("  y: [-0.9, 1] m\n"), std::string::npos) << text;
 	EXPECT_NE(text.find("  resolution: 0.05 m\n"), std::string::npos) << text;
+}
+
+TEST(MapPictures, WritesReplaceTheFileALinkLeadsToAndRefuseDevices)
+{
+	// Renaming over a link would replace the link; over a pipe or a device
+	// (/dev/null as root) it would put a plain file in its place.
+	const fs::path dir = test::scratchDir("map_pictures", "links");
+	const auto write = [](const fs::path& path, const std::string& text) {
+		detail::writeFileAtomically(path.string(), [&text](std::ostream& os) { os << text; });
+	};
+	write(dir / "real.txt", "old");
+	fs::create_symlink("real.txt", dir / "link.txt");
+	write(dir / "link.txt", "new");
+	EXPECT_TRUE(fs::is_symlink(dir / "link.txt"));
+	EXPECT_EQ(readText(dir / "real.txt"), "new");
+
+	ASSERT_EQ(mkfifo((dir / "pipe.txt").c_str(), 0600), 0);
+	fs::create_symlink("/dev/null", dir / "null.txt");
+	for (const char* name : {"pipe.txt", "null.txt"})
+	{
+		try
+		{
+			write(dir / name, "x");
+			ADD_FAILURE() << name << " was written";
+		}
+		catch (const std::runtime_error& e)
+		{
+			EXPECT_NE(std::string(e.what()).find("not a regular file"), std::string::npos)
+				<< e.what();
+		}
+	}
+	EXPECT_EQ(fs::status(dir / "pipe.txt").type(), fs::file_type::fifo);
+	EXPECT_TRUE(fs::is_symlink(dir / "null.txt"));
+	EXPECT_EQ(
+		test::filesIn(dir),
+		(std::set<std::string>{"real.txt", "link.txt", "pipe.txt", "null.txt"}));
 }
 
 TEST(MapPictures, FailedWritesThrowAndLeaveNothing)

@@ -42,12 +42,35 @@ std::string temporaryPathFor(const std::string& path)
 	fs::remove(temporaryPath, ignored);
 	throw std::runtime_error("cannot write '" + path + "': " + why);
 }
+
+/** Where the file `path` names lies: `path` itself, or the file a symbolic
+ * link leads to (renaming over the link would replace the link, not the
+ * file). \throws std::runtime_error when that is not a regular file (a
+ * device such as /dev/null, a pipe, a socket): renaming over it would put a
+ * plain file in its place, which as root replaces a system device. */
+std::string fileBehind(const std::string& path)
+{
+	std::error_code ec;
+	const fs::file_status status = fs::status(path, ec);
+	if (!fs::exists(status)) return path;
+	if (fs::is_directory(status))
+		throw std::runtime_error("cannot write '" + path + "': it is a folder");
+	if (!fs::is_regular_file(status))
+		throw std::runtime_error(
+			"cannot write '" + path +
+			"': it is not a regular file (a device, a pipe or a socket); give a file");
+	if (!fs::is_symlink(fs::symlink_status(path, ec))) return path;
+	const fs::path target = fs::canonical(path, ec);
+	if (ec) throw std::runtime_error("cannot write '" + path + "': " + ec.message());
+	return target.string();
+}
 }  // namespace
 
 void writeFileAtomicallyByName(
-	const std::string& path,
+	const std::string& requestedPath,
 	const std::function<bool(const std::string& temporaryPath)>& writer)
 {
+	const std::string path = fileBehind(requestedPath);
 	const std::string tmp = temporaryPathFor(path);
 	bool written = false;
 	try

@@ -61,6 +61,16 @@ void paint(
 	}
 }
 
+/** A number's text as a YAML 1.1 float: that grammar (PyYAML's, ROS's
+ * Python tools') wants a point, and reads "1e+06" or "5e-05" as strings. */
+std::string yamlFloat(std::string text)
+{
+	const auto exponent = text.find_first_of("eE");
+	if (exponent != std::string::npos && text.find('.') == std::string::npos)
+		text.insert(exponent, ".0");
+	return text;
+}
+
 /** A file name as a YAML scalar: plain when that is unambiguous, else
  * double-quoted. */
 std::string yamlScalar(const std::string& s)
@@ -140,20 +150,28 @@ void CEvidentialGridMap2D::getAsOccupancyGrid(
 	mrpt::maps::COccupancyGridMap2D& grid) const
 {
 	// COccupancyGridMap2D snaps its bounds to multiples of the resolution and
-	// stores floats, so each of its cells takes the BetP of the cell holding
-	// its centre: one to one when the origins agree, nearest otherwise.
-	// Its cells hold the probability of being free (0 = occupied).
+	// stores floats. With as many cells as ours (our origin on its lattice,
+	// give or take a float's rounding: up to 0.25 m at UTM coordinates), each
+	// of its cells takes ours of the same index; else (an origin off its
+	// lattice) the cell holding its centre, worked out in doubles (its own
+	// float centres repeat from 1e6 m on, and rows would be copied in place
+	// of others). Its cells hold the probability of being free (0 = occupied).
 	const GridGeometry& g = geometry();
 	grid.setSize(
 		static_cast<float>(g.xMin), static_cast<float>(g.xMax()),
 		static_cast<float>(g.yMin), static_cast<float>(g.yMax()),
 		static_cast<float>(g.resolution), 0.5f);
+	const double x0 = grid.getXMin(), y0 = grid.getYMin();
+	const bool sameCells = static_cast<int>(grid.getSizeX()) == g.sizeX &&
+		static_cast<int>(grid.getSizeY()) == g.sizeY;
 	for (unsigned cy = 0; cy < grid.getSizeY(); ++cy)
 		for (unsigned cx = 0; cx < grid.getSizeX(); ++cx)
-			grid.setCell(
-				static_cast<int>(cx), static_cast<int>(cy),
-				static_cast<float>(
-					1.0 - getCellBetP(grid.idx2x(cx), grid.idx2y(cy))));
+		{
+			const double p = sameCells
+				? betP(m_grid.read(g.index(static_cast<int>(cx), static_cast<int>(cy))))
+				: getCellBetP(x0 + (cx + 0.5) * g.resolution, y0 + (cy + 0.5) * g.resolution);
+			grid.setCell(static_cast<int>(cx), static_cast<int>(cy), static_cast<float>(1.0 - p));
+		}
 }
 
 void CEvidentialGridMap2D::saveAsROSMap(const std::string& prefix) const
@@ -182,11 +200,11 @@ void CEvidentialGridMap2D::saveAsROSMap(const std::string& prefix) const
 	writeFileAtomically(prefix + ".yaml", [&](std::ostream& os) {
 		os << "image: "
 		   << yamlScalar(std::filesystem::path(pgmPath).filename().string())
-		   << "\nresolution: " << detail::shortestText(g.resolution) << "\norigin: ["
-		   << detail::metresText(g.xMin) << ", " << detail::metresText(g.yMin)
-		   << ", 0.0]\nnegate: 0\noccupied_thresh: "
-		   << detail::shortestText(kRosOccupiedThresh)
-		   << "\nfree_thresh: " << detail::shortestText(kRosFreeThresh) << "\n";
+		   << "\nresolution: " << yamlFloat(detail::shortestText(g.resolution))
+		   << "\norigin: [" << yamlFloat(detail::metresText(g.xMin)) << ", "
+		   << yamlFloat(detail::metresText(g.yMin)) << ", 0.0]\nnegate: 0\noccupied_thresh: "
+		   << yamlFloat(detail::shortestText(kRosOccupiedThresh))
+		   << "\nfree_thresh: " << yamlFloat(detail::shortestText(kRosFreeThresh)) << "\n";
 	});
 }
 

@@ -10,11 +10,14 @@ namespace mrpt_evidential::detail
 /** Writes the file `path` so that a reader sees either its previous content
  * or the complete new one, never a partial file: `writer` writes into a
  * temporary file of the same directory, which is flushed, closed and renamed
- * over `path` only if every step succeeded. The stream is binary.
- * \throws std::runtime_error naming `path` if the temporary file cannot be
- *  created, written, closed or renamed, or if `writer` throws a
- *  std::exception (its message is kept). The temporary file is removed in
- *  every failure case. */
+ * over `path` only if every step succeeded. The stream is binary. When
+ * `path` is a symbolic link, the file it leads to is replaced (the link
+ * stays).
+ * \throws std::runtime_error naming `path` if it exists and is no regular
+ *  file (a device, a pipe: renaming over it would replace it), if the
+ *  temporary file cannot be created, written, closed or renamed, or if
+ *  `writer` throws a std::exception (its message is kept). The temporary
+ *  file is removed in every failure case. */
 void writeFileAtomically(
 	const std::string& path, const std::function<void(std::ostream&)>& writer);
 
