@@ -280,17 +280,8 @@ void build(const TBuildOptions& options, SteadyClock::time_point start)
 				 : std::string()) +
 			")");
 	}
-	// Scans that all fell beyond the cell budget leave a map of nothing but
-	// unknown cells: no map to write in place of a good one.
-	if (const auto counts = map->countDecisions();
-		map->partlyInsertedCount() == inserter.inserted() &&
-		counts.free + counts.occupied + counts.conflict == 0)
-		throw std::runtime_error(
-			options.source.input + ": no cell of the map was seen: all " +
-			std::to_string(inserter.inserted()) +
-			" scans inserted lay beyond the grid that maxCells (" +
-			std::to_string(map->maxCells()) +
-			" cells) lets it grow to (poses far from the grid's place? see the warning above)");
+	// No map of nothing but unknown cells in place of a good one.
+	requireACellSeen(*map, inserter.inserted(), options.source.input);
 	growth.finish(*map, inserter.inserted());
 
 	TBuildRecord run;

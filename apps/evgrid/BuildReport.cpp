@@ -76,9 +76,10 @@ void writeProducts(
 	if (run.input.otherObservations.empty()) os << "other observations: none\n";
 	for (const auto& [cls, n] : run.input.otherObservations)
 		os << "other observations: " << n << " " << cls << " (not inserted)\n";
-	if (run.frames > 0)
+	if (growth.frameEvery > 0)
 		os << "frames: " << run.frames << " pictures in frames/, one every "
-		   << growth.frameEvery << " scans\n";
+		   << growth.frameEvery << " scans"
+		   << (run.frames == 0 ? " (fewer scans were inserted: frames/ is empty)" : "") << "\n";
 	if (run.animationFrames > 0)
 		os << "animation: growth.avi, " << run.animationFrames
 		   << " frames of " << growth.animationWidth << " x "

@@ -26,6 +26,9 @@ CGrowthRecorder::CGrowthRecorder(
 	const TGrowthOptions& options, const COutputFolder& out)
 	: m_options(options), m_out(out)
 {
+	// Made now, even if no frame falls due: frames/ replaces an earlier
+	// run's as a whole, also when this run writes none.
+	if (options.frameEvery > 0) std::filesystem::create_directories(out.staged("frames"));
 	if (options.animation)
 		m_animation.emplace(
 			out.staged("growth.avi"), options.animationWidth,
@@ -47,7 +50,6 @@ void CGrowthRecorder::afterInsertion(
 	{
 		mrpt::img::CImage picture;
 		const std::string folder = m_out.staged("frames");
-		std::filesystem::create_directories(folder);
 		map.getAsPicture(kMapPicture, picture);
 		char file[64];
 		std::snprintf(

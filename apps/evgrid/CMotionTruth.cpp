@@ -22,8 +22,11 @@ namespace
 /** The files are about 1 MB decompressed; this guards against a damaged or
  * foreign file that decompresses without end. */
 constexpr std::size_t kMaxBytes = std::size_t(1) << 30;
-/** Likewise for the grid's cells (the simulator's scenes have 48600). */
-constexpr long kMaxCells = 100'000'000;
+/** Likewise for the grid's cells (the room's scenes have 48,600, the
+ * street's a few million); the scorer keeps some 16 bytes a cell. */
+constexpr long kMaxCells = 20'000'000;
+/** A truth cell's side: the simulator writes 0.05 m. */
+constexpr double kMinResolution = 1e-3, kMaxResolution = 10.0;
 
 /** The whole decompressed text (zlib reads a plain file as it is). */
 std::string readAll(const std::string& path)
@@ -95,11 +98,12 @@ class CMotionTruth::CParser
 		t.m_grid.x0 = number(g[1], "X0");
 		t.m_grid.y0 = number(g[2], "Y0");
 		t.m_grid.resolution = number(g[3], "RES");
-		if (!(t.m_grid.resolution > 0)) fail("RES must be > 0");
+		if (!(t.m_grid.resolution >= kMinResolution && t.m_grid.resolution <= kMaxResolution))
+			fail("RES must be in [0.001, 10] m");
 		t.m_grid.sizeX = static_cast<int>(whole(g[4], "NX", 1, kMaxCells));
 		t.m_grid.sizeY = static_cast<int>(whole(g[5], "NY", 1, kMaxCells));
 		if (static_cast<long>(t.m_grid.cellCount()) > kMaxCells)
-			fail("a grid of more than 1e8 cells");
+			fail("a grid of more than 2e7 cells");
 		m_cells = static_cast<long>(t.m_grid.cellCount());
 		const long scans =
 			whole(expect("scans", 2)[1], "the scan count", 0, 100'000'000);
@@ -173,9 +177,9 @@ class CMotionTruth::CParser
 		if (ec != std::errc() || end != text.data() + text.size() || v < min ||
 			v > max)
 			fail(
-				std::string("bad ") + what + " '" + std::string(text) +
-				"' (a whole number from " + std::to_string(min) + " to " +
-				std::to_string(max) + ")");
+				std::string(what) + " '" + std::string(text) +
+				"' is not a whole number from " + std::to_string(min) + " to " +
+				std::to_string(max));
 		return v;
 	}
 
@@ -186,8 +190,7 @@ class CMotionTruth::CParser
 			std::from_chars(text.data(), text.data() + text.size(), v);
 		if (ec != std::errc() || end != text.data() + text.size() ||
 			!std::isfinite(v))
-			fail(
-				std::string("bad ") + what + " '" + std::string(text) + "'");
+			fail(std::string(what) + " '" + std::string(text) + "' is not a finite number");
 		return v;
 	}
 

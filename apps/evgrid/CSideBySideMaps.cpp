@@ -4,6 +4,8 @@
 #include "CSideBySideMaps.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "CInputWalker.h"
@@ -52,8 +54,17 @@ void CSideBySideMaps::offer(
 		return;
 	}
 	++m_counts.offered;
+	const std::size_t partlyBefore = m_ours->partlyInsertedCount();
 	if (insertScan(*m_ours, scan, *pose, m_input.place(), "our map"))
 		++m_counts.oursInserted;
+	// MRPT's grid grows to any scan, without a budget: far poses (kilometres
+	// from the grid) end it in std::bad_alloc or a crash inside MRPT.
+	if (m_ours->partlyInsertedCount() != partlyBefore)
+		throw std::runtime_error(
+			m_input.place() + ": the scan lies beyond the grid that maxCells (" +
+			std::to_string(m_ours->maxCells()) +
+			" cells) lets our map grow to, and MRPT's grid has no such limit: compare stops "
+			"(poses far from the grid's place?)");
 	if (insertScan(m_mrpt, scan, *pose, m_input.place(), "MRPT's grid"))
 		++m_counts.mrptInserted;
 }

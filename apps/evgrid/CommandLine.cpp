@@ -62,6 +62,17 @@ std::optional<int> parse(
 	// TCLAP takes argv[0] as the program name shown in the usage.
 	std::vector<const char*> args{name.c_str()};
 	for (int i = first; i < argc; ++i) args.push_back(argv[i]);
+	// TCLAP takes an empty value ("--tolerance ''") for the default.
+	for (std::size_t i = 1; i < args.size(); ++i)
+	{
+		const std::string arg = args[i];
+		const bool option = arg.size() > 1 && arg[0] == '-';
+		if (option && arg.back() == '=')
+			throw UsageError(arg.substr(0, arg.size() - 1) + " needs a non-empty value");
+		if (option && arg.find('=') == std::string::npos && i + 1 < args.size() &&
+			args[i + 1][0] == '\0')
+			throw UsageError(arg + " needs a non-empty value");
+	}
 	const bool run = cmd.parse(static_cast<int>(args.size()), args.data());
 	cmd.setOutput(nullptr);
 	if (run) return std::nullopt;

@@ -54,7 +54,9 @@ std::optional<int> parseOptions(
 void compare(const TCompareOptions& options)
 {
 	if (!options.report.output.empty())
-		checkOutputFile(options.report.output);
+		checkOutputFile(
+			options.report.output,
+			{options.source.input, options.source.poses, options.source.config});
 	auto ours = createMap(options.source);
 	// MRPT's grid as the same .ini configures it for icp-slam and the other
 	// programs, when it lists one.

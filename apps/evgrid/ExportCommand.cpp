@@ -117,10 +117,21 @@ int runExport(int argc, char** argv, int first)
 		const CPoseFile poses = CPoseFile::load(argPath.getValue(), CPoseFile::Kind::Auto);
 		for (const auto& p : poses.poses()) path.emplace_back(p.x, p.y, 0.0);
 	}
-	for (auto* arg : {&argGridmap, &argRos, &argScene})
-		if (arg->isSet())
-			createFolder(
-				std::filesystem::path(arg->getValue()).parent_path().string());
+	// Every file to write, checked before the first is written: none may be
+	// the map or the path read, a folder, a device or a pipe.
+	if (argRos.isSet() && std::filesystem::path(argRos.getValue()).filename().empty())
+		throw UsageError("--ros needs a file prefix (DIR/NAME), not a folder: " + argRos.getValue());
+	std::vector<std::string> outputs;
+	if (argGridmap.isSet()) outputs.push_back(argGridmap.getValue());
+	if (argRos.isSet())
+		for (const char* extension : {".pgm", ".yaml"})
+			outputs.push_back(argRos.getValue() + extension);
+	if (argScene.isSet()) outputs.push_back(argScene.getValue());
+	if (argPng.isSet())
+		for (const char* name : CEvidentialGridMap2D::pictureNames())
+			outputs.push_back((std::filesystem::path(argPng.getValue()) / name).string());
+	for (const auto& output : outputs)
+		checkOutputFile(output, {argMap.getValue(), argPath.isSet() ? argPath.getValue() : ""});
 	if (argPng.isSet())
 	{
 		stopIfRequested();

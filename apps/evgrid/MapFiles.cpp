@@ -83,6 +83,33 @@ std::unique_ptr<CEvidentialGridMap2D> createMapFromConfig(
 				  "_likelihoodOpts)");
 }
 
+namespace
+{
+/** MRPT reads its grid's options unchecked: a zero LF_decimation loops
+ * forever in its likelihood, a zero or negative spread or range scores
+ * nothing. \throws std::runtime_error naming the key. */
+void checkMrptGridOptions(
+	const mrpt::maps::COccupancyGridMap2D::TMapDefinition& definition, const std::string& iniPath)
+{
+	using Grid = mrpt::maps::COccupancyGridMap2D;
+	const auto& lo = definition.likelihoodOpts;
+	const auto& io = definition.insertionOpts;
+	const auto refuse = [&iniPath](const std::string& key, const std::string& rule) {
+		throw std::runtime_error(
+			iniPath + ": the occupancyGrid's " + key + " " + rule +
+			" (MRPT reads it unchecked; evgrid compare would hang or score nothing)");
+	};
+	if (lo.LF_decimation < 1) refuse("LF_decimation", "must be at least 1");
+	if (!(lo.LF_stdHit > 0)) refuse("LF_stdHit", "must be positive");
+	if (!(lo.LF_maxCorrsDistance > 0)) refuse("LF_maxCorrsDistance", "must be positive");
+	if (!(lo.LF_maxRange > 0)) refuse("LF_maxRange", "must be positive");
+	if (!(io.maxDistanceInsertion > 0)) refuse("maxDistanceInsertion", "must be positive");
+	if (lo.likelihoodMethod < Grid::lmMeanInformation ||
+		lo.likelihoodMethod > Grid::lmConsensusOWA)
+		refuse("likelihoodMethod", "is no method MRPT knows");
+}
+}  // namespace
+
 std::optional<mrpt::maps::COccupancyGridMap2D::TMapDefinition> occupancyGridFromConfig(
 	const std::string& iniPath, const std::string& section)
 {
@@ -90,7 +117,10 @@ std::optional<mrpt::maps::COccupancyGridMap2D::TMapDefinition> occupancyGridFrom
 		if (const auto* definition =
 				dynamic_cast<const mrpt::maps::COccupancyGridMap2D::TMapDefinition*>(
 					init.get()))
+		{
+			checkMrptGridOptions(*definition, iniPath);
 			return *definition;
+		}
 	return std::nullopt;
 }
 

@@ -25,15 +25,23 @@ void createFolder(const std::string& dir)
 			dir + ": cannot create the folder: " + ec.message());
 }
 
-void checkOutputFile(const std::string& path)
+void checkOutputFile(const std::string& path, const std::vector<std::string>& inputs)
 {
 	namespace fs = std::filesystem;
 	std::string dir = fs::path(path).parent_path().string();
 	createFolder(dir);
 	if (dir.empty()) dir = ".";
 	std::error_code ec;
-	if (fs::is_directory(path, ec))
+	const fs::file_status status = fs::status(path, ec);
+	if (fs::is_directory(status))
 		throw std::runtime_error(path + ": is a folder, not a file");
+	if (fs::exists(status) && !fs::is_regular_file(status))
+		throw std::runtime_error(
+			path + ": is not a regular file (a device, a pipe or a socket); give a file");
+	for (const auto& input : inputs)
+		if (!input.empty() && fs::exists(status) && fs::equivalent(path, input, ec))
+			throw std::runtime_error(
+				path + ": is also an input (" + input + "): writing it would destroy it");
 	if (access(dir.c_str(), W_OK) != 0)
 		throw std::runtime_error(
 			path + ": cannot be written: its folder is not writable");

@@ -14,10 +14,11 @@ namespace evgrid
  * folder. \throws std::runtime_error naming `dir` if it cannot be created. */
 void createFolder(const std::string& dir);
 
-/** Before any work, for a report written at the end: the folder of `path`
- * exists (created if needed) and can be written, and `path` is not a
- * folder. \throws std::runtime_error naming `path` otherwise. */
-void checkOutputFile(const std::string& path);
+/** Before any work, for a file written at the end: the folder of `path`
+ * exists (created if needed) and can be written, `path` is not a folder nor
+ * a device or a pipe, and it is none of `inputs` (under any name: a link, a
+ * path with ..). \throws std::runtime_error naming `path` otherwise. */
+void checkOutputFile(const std::string& path, const std::vector<std::string>& inputs = {});
 
 /** Writes the map's pictures (CEvidentialGridMap2D::pictureNames()) into
  * `dir`, created if missing, each atomically, above their legends unless

@@ -30,4 +30,18 @@ bool insertScan(
 	}
 }
 
+void requireACellSeen(
+	const mrpt_evidential::CEvidentialGridMap2D& map, std::size_t inserted,
+	const std::string& input)
+{
+	const auto counts = map.countDecisions();
+	if (inserted == 0 || map.partlyInsertedCount() != inserted ||
+		counts.free + counts.occupied + counts.conflict > 0)
+		return;
+	throw std::runtime_error(
+		input + ": no cell of the map was seen: all " + std::to_string(inserted) +
+		" scans inserted lay beyond the grid that maxCells (" + std::to_string(map.maxCells()) +
+		" cells) lets it grow to (poses far from the grid's place? see the warning above)");
+}
+
 }  // namespace evgrid

@@ -1,10 +1,14 @@
 /* evgrid: inserting one scan into a map, as build, compare and score-motion
- * do: one home for the error that says which scan the map could not take. */
+ * do: one home for the error that says which scan the map could not take,
+ * and for the one that says the scans left the map empty. */
 #pragma once
 
 #include <mrpt/maps/CMetricMap.h>
 #include <mrpt/obs/CObservation.h>
 #include <mrpt/poses/CPose3D.h>
+#include <mrpt_evidential/CEvidentialGridMap2D.h>
+
+#include <cstddef>
 
 #include <string>
 
@@ -22,5 +26,13 @@ bool insertScan(
 	mrpt::maps::CMetricMap& map, const mrpt::obs::CObservation& scan,
 	const mrpt::poses::CPose3D& pose, const std::string& place,
 	const char* mapName = nullptr);
+
+/** After a run that inserted `inserted` scans into `map`: those scans all
+ * lay beyond the grid that maxCells lets it grow to, so that the map holds
+ * nothing but unknown cells.
+ * \throws std::runtime_error "INPUT: no cell of the map was seen: ..." then. */
+void requireACellSeen(
+	const mrpt_evidential::CEvidentialGridMap2D& map, std::size_t inserted,
+	const std::string& input);
 
 }  // namespace evgrid

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <iostream>
 #include <stdexcept>
 #include <utility>
 
@@ -250,7 +251,10 @@ void scoreMotion(const TScoreMotionOptions& options)
 {
 	// The small files first, so that their errors come before the long walk.
 	if (!options.report.output.empty())
-		checkOutputFile(options.report.output);
+		checkOutputFile(
+			options.report.output,
+			{options.source.input, options.source.poses, options.source.config, options.truth,
+			 options.truthPoses});
 	const std::unique_ptr<CEvidentialGridMap2D> map = createMap(options.source);
 	CPoseSource poses = createPoseSource(options.source);
 	const CMotionTruth truth = CMotionTruth::load(options.truth);
@@ -270,6 +274,7 @@ void scoreMotion(const TScoreMotionOptions& options)
 		 {}});
 	progress.finish();
 	replay.finish();
+	requireACellSeen(*map, replay.counts().scored, options.source.input);
 
 	TScoreMotionRecord run;
 	run.poses = poses.description();
@@ -284,6 +289,14 @@ void scoreMotion(const TScoreMotionOptions& options)
 			writeMotionKeyValues(os, options, truth, run);
 		},
 		[&](std::ostream& os) { printMotionReport(os, options, truth, run); });
+	// Scores of nothing read as a layer that flagged wrong: say why.
+	if (run.score.appeared.truth == 0 && run.score.disappeared.truth == 0 &&
+		run.score.appeared.predicted + run.score.disappeared.predicted > 0)
+		std::cerr << kScoreMotionName
+				  << ": warning: no truth cell lay where the scans looked, though the map "
+					 "flagged cells: are the map and the truth in one frame? (without -p the "
+					 "map follows the odometry from (0, 0, 0); give the simulator's "
+					 "PREFIX.slam.txt or PREFIX.gt.txt)\n";
 }
 }  // namespace
 

@@ -64,4 +64,9 @@ run 2 "$EVGRID" export map.evgrid
 contains "$ERR" "nothing to do"
 run 2 "$EVGRID" export map.evgrid --png ""
 contains "$ERR" "--png needs a non-empty value"
+# An empty value is not the default, for every option of every subcommand.
+run 2 "$EVGRID" score-motion -i x.rawlog --truth x.motion.gz --tolerance ""
+contains "$ERR" "--tolerance needs a non-empty value"
+run 2 "$EVGRID" build -i x.rawlog -o out --animation --animation-fps=
+contains "$ERR" "--animation-fps needs a non-empty value"
 echo "evgrid_cli: OK"

@@ -107,6 +107,12 @@ printf '%s\n' "[MappingApplication_occupancyGrid_00_creationOpts]" "resolution=0
   "[MappingApplication_occupancyGrid_00_insertOpts]" "maxDistanceInsertion=2" >>"$T/both.ini"
 run 0 "$EVGRID" compare -c "$T/both.ini" -i "$room" -p "$gt" --poses-format time --output "$T/both.txt"
 cp "$OUT" "$T/both.stdout"
+# MRPT's own options, which MRPT reads unchecked: a zero decimation would
+# make its likelihood loop forever.
+printf '%s\n' "[MappingApplication_occupancyGrid_00_likelihoodOpts]" "LF_decimation=0" \
+  | cat "$T/both.ini" - >"$T/decimation.ini"
+run 1 "$EVGRID" compare -c "$T/decimation.ini" -i "$room" -p "$gt" --poses-format time
+contains "$ERR" "the occupancyGrid's LF_decimation must be at least 1"
 check_report "$T/both.txt" "$T/both.stdout"
 contains "$T/both.stdout" "MRPT's options: the .ini's first occupancyGrid (its insertOpts and likelihoodOpts; our map's cells)"
 # MRPT's grid at our 0.05 m cells, as with its defaults (0.25 m would make
@@ -128,6 +134,11 @@ run 1 "$EVGRID" compare -i "$T/cut.rawlog" --output "$T/kept/room.txt"
 contains "$ERR" "$T/cut.rawlog: entry "
 contains "$ERR" "truncated file?"
 [ "$(fingerprint "$T/kept")" = "$before" ] || fail "a failed run changed $T/kept"
+#    The report's path is an input's: refused before the work, the input kept.
+cp "$room" "$T/victim.rawlog"
+run 1 "$EVGRID" compare -i "$T/victim.rawlog" -p "$gt" --output "$T/victim.rawlog"
+contains "$ERR" "$T/victim.rawlog: is also an input ($T/victim.rawlog): writing it would destroy it"
+cmp -s "$room" "$T/victim.rawlog" || fail "the rawlog was overwritten"
 #    An input without 2-D scans: the error says what it held instead.
 run 1 "$EVGRID" compare -i "$DATASETS/test_velodyne_VLP16.rawlog" --output "$T/kept/room.txt"
 contains "$ERR" "a map took no scan (0 2-D scans"
@@ -176,6 +187,13 @@ run 0 "$EVGRID" compare -i "$room" --holdout 1000 --output "$T/none-held.txt"
 contains "$OUT" "no scan was held out (fewer than 1000 scans with a pose)"
 [ "$(value scans_held_out "$T/none-held.txt") $(value ours_hit_rate_pct "$T/none-held.txt")" = "0 n/a" ] ||
   fail "no held-out scan: not 0 and n/a"
+
+# Poses kilometres from the grid: our map stops at its cell budget, and
+# compare stops there too (MRPT's grid, which has no budget, would grow until
+# it exhausted the memory and crashed).
+awk '/^%/ { print; next } { printf "%s %.6f %.6f %s\n", $1, $2 + 500000, $3 - 4200000, $4 }' "$gt" >"$T/utm.txt"
+run 1 "$EVGRID" compare -q -c "$EVGRID_INI" -i "$room" -p "$T/utm.txt"
+contains "$ERR" "lets our map grow to, and MRPT's grid has no such limit: compare stops"
 
 # 5. Usage errors: exit 2 before any work.
 run 2 "$EVGRID" compare -i "$room" --holdout 1

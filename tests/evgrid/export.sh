@@ -68,6 +68,28 @@ after=$(fingerprint "$T/png" && fingerprint "$T/grid" && fingerprint "$T/ros")
 [ "$before" = "$after" ] || fail "a failed export changed $T"
 run 1 "$EVGRID" export "$T/missing.evgrid" --png "$T/png"
 contains "$ERR" "$T/missing.evgrid: cannot open"
+# The map itself, a pipe or a device as a destination: refused before any
+# write (a rename would replace them: /dev/null as root); a link: the file it
+# leads to is written, the link stays; a --ros prefix that names a folder.
+cp "$map" "$T/copy.evgrid"
+run 1 "$EVGRID" export "$T/copy.evgrid" --png "$T/png2" --gridmap "$T/copy.evgrid"
+contains "$ERR" "$T/copy.evgrid: is also an input ($T/copy.evgrid): writing it would destroy it"
+cmp -s "$map" "$T/copy.evgrid" || fail "the map was overwritten"
+[ ! -e "$T/png2" ] || fail "an export refused wrote pictures"
+mkfifo "$T/fifo.gridmap"
+run 1 "$EVGRID" export "$map" --gridmap "$T/fifo.gridmap"
+contains "$ERR" "$T/fifo.gridmap: is not a regular file"
+[ -p "$T/fifo.gridmap" ] || fail "the pipe was replaced"
+run 1 "$EVGRID" export "$map" --scene /dev/null
+contains "$ERR" "/dev/null: is not a regular file"
+[ -c /dev/null ] || fail "/dev/null was replaced"
+: >"$T/real.gridmap"
+ln -s real.gridmap "$T/link.gridmap"
+run 0 "$EVGRID" export "$map" --gridmap "$T/link.gridmap" -q
+[ -L "$T/link.gridmap" ] || fail "the link was replaced"
+[ -s "$T/real.gridmap" ] || fail "the file behind the link was not written"
+run 2 "$EVGRID" export "$map" --ros "$T/ros/"
+contains "$ERR" "--ros needs a file prefix (DIR/NAME), not a folder"
 
 # Stopped (Ctrl-C) at any moment: each file written whole or not at all,
 # never a temporary file left; a stopped export says so and exits 1.

@@ -43,6 +43,11 @@ frames=$(cd "$out/frames" && ls)
 [ "$frames" = "$(printf 'frame_%06d_map.png\n' 100 200)" ] ||
   fail "frames after the rerun: $frames"
 [ -z "$(find "$out" -name '.evgrid-build-*')" ] || fail "temporary folder left in $out"
+# --every beyond the scans: no frame falls due, and frames/ is replaced by an
+# empty one (not left with the earlier run's), which the summary says.
+run 0 "$EVGRID" build -i "$SENA" -o "$out" --every 100000
+[ -d "$out/frames" ] && [ -z "$(ls -A "$out/frames")" ] || fail "frames/ kept the earlier run's: $(ls "$out/frames")"
+contains "$out/summary.txt" "frames: 0 pictures in frames/, one every 100000 scans (fewer scans were inserted: frames/ is empty)"
 # A grid at its cell budget: the scans it could hold only in part are counted,
 # on the console and in the summary (and a run within the budget says nothing).
 sed 's/^maxCells=.*/maxCells=500000/' "$EVGRID_INI" >"$T/budget.ini"

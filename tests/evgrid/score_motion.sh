@@ -261,6 +261,19 @@ run 1 "$EVGRID" score-motion -c "$T/normalize.ini" -i "$room.rawlog" -p "$room.s
 contains "$ERR" "evgrid score-motion: error: $T/short.gt.txt: no pose at the time of 2-D scan 99"
 [ ! -e "$T/x.txt" ] || fail "a failed run wrote its output"
 
+# The map in another frame than the truth (the odometry, without -p): a
+# warning, not scores that read as a layer that flags wrong. Poses far
+# beyond the cell budget: the map saw nothing, an error as in build.
+run 0 "$EVGRID" score-motion -q -c "$T/normalize.ini" -i "$room.rawlog" --truth "$room.motion.gz"
+contains "$ERR" "warning: no truth cell lay where the scans looked"
+awk '/^%/ { print; next } { printf "%s %.6f %.6f %s\n", $1, $2 + 50000, $3 + 50000, $4 }' "$room.gt.txt" >"$T/far.gt.txt"
+run 1 "$EVGRID" score-motion -q -c "$T/normalize.ini" -i "$room.rawlog" -p "$T/far.gt.txt" \
+  --truth "$room.motion.gz" --output "$T/far.txt"
+contains "$ERR" ": no cell of the map was seen: all "
+[ ! -e "$T/far.txt" ] || fail "a failed run wrote its output"
+run 0 "$EVGRID" score-motion -q -c "$T/normalize.ini" -i "$room.rawlog" -p "$room.slam.txt" --truth "$room.motion.gz"
+lacks "$ERR" "warning"
+
 # 4. Deterministic, and quiet with -q.
 run 0 "$EVGRID" score-motion -q -c "$T/normalize.ini" -i "$room.rawlog" -p "$room.slam.txt" \
   --truth "$room.motion.gz" --output "$T/again.txt"
@@ -301,6 +314,12 @@ fails_with "$T/short.motion.gz" "line 1000: the file ends after 331 of its 800 s
 gzip -dc "$room.motion.gz" | sed '501s/^occupied [0-9]*/occupied 5/' | gzip >"$T/miscounted.motion.gz"
 fails_with "$T/miscounted.motion.gz" "line 501: more cells than the line's count"
 fails_with "$room.rawlog" "line 1: not an evgrid-simulate motion file of version 1"
+# Grids that would take gigabytes or minutes to score, and a bad number.
+for grid in "-5.50 -4.50 0.05 100000 1000:a grid of more than 2e7 cells" \
+  "-5.50 -4.50 1e300 270 180:RES must be in [0.001, 10] m" "nan -4.50 0.05 270 180:X0 'nan' is not a finite number"; do
+  gzip -dc "$room.motion.gz" | sed "s/^grid .*/grid ${grid%%:*}/" | gzip >"$T/grid.motion.gz"
+  fails_with "$T/grid.motion.gz" "line 4: ${grid#*:}"
+done
 fails_with "$T/none.motion.gz" "cannot open: No such file or directory"
 
 # 7. Usage errors: exit 2 before any work.
