@@ -484,6 +484,20 @@ TEST(MapRendering, VideoFramesHaveTheAskedSize)
 	map.getAsPicture(0, frame, true, 40, 30);
 	EXPECT_EQ(frame.getWidth(), 40u);
 	EXPECT_EQ(frame.getHeight(), 30u);
+	// Too narrow for the legend's words (which would be cut at the edge),
+	// though tall enough: the map alone too, centred on the dark backdrop,
+	// where a wide frame has the legend's white strip at the bottom.
+	const auto bottomLeft = [&frame]() {
+		return frame.getPixelDepth() == mrpt::img::PixelDepth::D8U
+			? static_cast<int>(*frame.ptr<std::uint8_t>(0, frame.getHeight() - 1))
+			: -1;
+	};
+	map.getAsPicture(0, frame, true, 320, 400);
+	EXPECT_EQ(bottomLeft(), 0xFF);
+	map.getAsPicture(0, frame, true, 40, 400);
+	EXPECT_EQ(frame.getWidth(), 40u);
+	EXPECT_EQ(frame.getHeight(), 400u);
+	EXPECT_EQ(bottomLeft(), 0x40);
 }
 
 TEST(MapRendering, SceneFilesHoldTheMapAndThePath)

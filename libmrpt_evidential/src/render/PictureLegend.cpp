@@ -95,7 +95,13 @@ mrpt::img::CImage withLegend(
 	if (fixedSize)
 	{
 		mapAreaHeight = height - stripHeight(rows);
-		if (mapAreaHeight < height / 2) mapAreaHeight = height;  // no room for a legend
+		// No room for a legend: it would take more than half the frame, or
+		// its widest entry would be cut at the frame's edge.
+		const int widest =
+			std::max_element(items.begin(), items.end(), [](const Item& a, const Item& b) {
+				return a.width < b.width;
+			})->width;
+		if (mapAreaHeight < height / 2 || widest > width - 2 * kPadding) mapAreaHeight = height;
 		const double scale = std::min(
 			static_cast<double>(width) / colour.getWidth(),
 			static_cast<double>(mapAreaHeight) / colour.getHeight());

@@ -24,7 +24,8 @@ struct LegendEntry
  * With `width` and `height` > 0 (a video's frames), the result has that size
  * instead: the strip at the bottom, the picture scaled to fit above it,
  * centred on dark grey; when the strip would leave less than half the
- * height, the picture alone fills the frame. */
+ * height, or the frame is narrower than its widest entry, the picture alone
+ * fills the frame. */
 mrpt::img::CImage withLegend(
 	const mrpt::img::CImage& picture, double resolution,
 	const std::vector<LegendEntry>& entries, int width = 0, int height = 0);
