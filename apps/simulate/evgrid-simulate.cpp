@@ -13,6 +13,7 @@
 #include <exception>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -353,6 +354,9 @@ void simulate(TOptions& opts)
 {
 	evgrid::catchStopSignals();
 	const std::filesystem::path prefix(opts.prefix);
+	if (const auto name = prefix.filename(); name.empty() || name == "." || name == "..")
+		throw std::runtime_error(
+			opts.prefix + ": OUTPUT_PREFIX needs a file name (DIR/NAME), not a folder");
 	evgrid::COutputFolder folder(
 		prefix.has_parent_path() ? prefix.parent_path().string() : std::string("."));
 	const std::string staged = folder.staged(prefix.filename().string());

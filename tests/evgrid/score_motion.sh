@@ -25,6 +25,8 @@ run 0 "$EVGRID_SIMULATE" --scene static --laps 1 "$T/static"
 mkdir -p "$T/sim" && cp "$T"/static.* "$T/sim/"
 interrupt INT "$T/sim" "$EVGRID_SIMULATE" --scene people --laps 20 "$T/sim/static"
 contains "$ERR" "interrupted by signal 2; no file was written"
+run 1 "$EVGRID_SIMULATE" --scene people "$T/sim/"
+contains "$ERR" "OUTPUT_PREFIX needs a file name (DIR/NAME), not a folder"
 run 0 "$EVGRID_SIMULATE" --scene street --duration 0.3 "$T/sim/street"
 [ "$(ls "$T"/sim | tr '\n' ' ')" = "static.gt.txt static.motion.gz static.rawlog static.slam.txt street.footprint.gz street.gt.txt street.gt3d.txt street.motion.gz street.rawlog street.slam.txt " ] ||
   fail "evgrid-simulate wrote $(ls -A "$T/sim")"
