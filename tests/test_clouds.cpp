@@ -3,6 +3,7 @@
  * bad clouds. The worlds of tests/support/clouds.h give the answer per
  * cell. */
 #include <gtest/gtest.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/img/CImage.h>
 #include <mrpt/obs/CObservationRotatingScan.h>
@@ -440,9 +441,19 @@ TEST(Clouds, SensorUpsideDownSeesTheSameWorld)
 	EXPECT_EQ(da.occupied, db.occupied);
 	EXPECT_EQ(at(b, 6.05, 0.05), Decision::Occupied);
 
-	// A robot upside down has no ground under it: refused.
+	// A robot upside down has no ground under it: refused, with its own
+	// note once, even after the note on a tilted scan.
 	CEvidentialGridMap2D refused = makeMap();
-	EXPECT_FALSE(refused.insertObservation(*upright, CPose3D(0, 0, 0, 0, 0, M_PI)));
+	mrpt::obs::CObservation2DRangeScan tilted;
+	tilted.resizeScan(3);
+	tilted.sensorPose = CPose3D(0, 0, 0, 0, M_PI / 4, 0);
+	const std::string err = test::stderrOf([&] {
+		EXPECT_FALSE(refused.insertObservation(tilted, CPose3D()));
+		for (int i = 0; i < 2; ++i)
+			EXPECT_FALSE(refused.insertObservation(*upright, CPose3D(0, 0, 0, 0, 0, M_PI)));
+	});
+	EXPECT_EQ(test::occurrences(err, "horizontalTolerance"), 1u) << err;
+	EXPECT_EQ(test::occurrences(err, "points down"), 1u) << err;
 }
 
 TEST(Clouds, MillionsOfPointsAndUnreadTypes)

@@ -233,8 +233,8 @@ TEST(MapIO, UnknownVersionIsRejected)
 {
 	auto bytes = serialize(mapWithEveryOption(0.3));
 	const std::size_t versionPos = versionPosition(bytes);
-	ASSERT_EQ(bytes[versionPos], 5);
-	for (const std::uint8_t v : {6, 7, 0x7F, 0xFF})
+	ASSERT_EQ(bytes[versionPos], 6);
+	for (const std::uint8_t v : {7, 8, 0x7F, 0xFF})
 	{
 		bytes[versionPos] = v;
 		CEvidentialGridMap2D target;

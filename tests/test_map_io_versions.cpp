@@ -1,6 +1,7 @@
 /* Map files of every earlier version still load, as what those versions
  * wrote (each made from today's bytes by undoing what came since); and the
- * latest version's additions (the cells that flip) are kept in files. */
+ * latest versions' additions (the cells that flip, the motion layer's
+ * memory) are kept in files and checked when read. */
 
 #include <gtest/gtest.h>
 #include <mrpt/poses/CPose3D.h>
@@ -8,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "support/map_bytes.h"
@@ -66,11 +68,35 @@ std::size_t stampHighByte(
 	return firstCellPosition(bytes, map.geometry().cellCount()) + 8 * packed + 7;
 }
 
-/** The map as version 4 wrote it: the same layout, no cell marked as one
- * that flips. */
-std::vector<std::uint8_t> asVersion4(const CEvidentialGridMap2D& map)
+/** The little-endian u64 at `at`. */
+std::uint64_t getLE64(const std::vector<std::uint8_t>& bytes, std::size_t at)
+{
+	std::uint64_t v = 0;
+	for (int i = 7; i >= 0; --i) v = (v << 8) | bytes[at + static_cast<std::size_t>(i)];
+	return v;
+}
+
+/** The map as version 5 wrote it: no insertionThreads and no motion memory
+ * after the cloud options. */
+std::vector<std::uint8_t> asVersion5(const CEvidentialGridMap2D& map)
 {
 	std::vector<std::uint8_t> bytes = serialize(map);
+	bytes[versionPosition(bytes)] = 5;
+	const std::size_t threads = insertionStart(bytes) + kCloudsAt + kCloudOptionBytes;
+	// The memory: a count and its cells, twice, then the kept length.
+	const std::size_t arrivals = threads + 4;
+	const std::size_t leaving = arrivals + 8 + 8 * getLE64(bytes, arrivals);
+	const std::size_t end = leaving + 8 + 8 * getLE64(bytes, leaving) + 8;
+	cut(bytes, threads, end - threads);
+	reseal(bytes);
+	return bytes;
+}
+
+/** The map as version 4 wrote it: the layout of version 5, no cell marked
+ * as one that flips. */
+std::vector<std::uint8_t> asVersion4(const CEvidentialGridMap2D& map)
+{
+	std::vector<std::uint8_t> bytes = asVersion5(map);
 	bytes[versionPosition(bytes)] = 4;
 	for (std::size_t i = 0; i < map.geometry().cellCount(); ++i)
 		bytes[stampHighByte(bytes, map, i)] &= 0x7F;
@@ -151,11 +177,85 @@ TEST(MapIO, CellsThatFlipAreKeptInFiles)
 	EXPECT_EQ(serialize(back), bytes);
 }
 
+TEST(MapIO, VersionFiveFilesStillLoad)
+{
+	// Version 5 kept no insertionThreads (it reads as 1) and no motion
+	// memory (its lists start again).
+	CEvidentialGridMap2D original = mapWithEveryOption();
+	ASSERT_EQ(original.insertionOptions.insertionThreads, 2u);
+	CEvidentialGridMap2D back;
+	deserialize(asVersion5(original), back);
+	original.insertionOptions.insertionThreads = 1;
+	expectSameMap(original, back);
+}
+
+TEST(MapIO, MotionMemoryReadsBackAndIsChecked)
+{
+	// The lists, forged into a grown map's stream (its cells' indices in
+	// memory are not the file's packed ones), read back and are written
+	// again as they were.
+	CEvidentialGridMap2D map = mapWithEveryOption();
+	map.insertObservation(
+		test::arcScan(181, 1.0, kMapFileScans.at(1010.0)), CPose3D(3.0, 1.0, 0, 0, 0, 0));
+	ASSERT_NE(map.geometry().stride(), static_cast<std::size_t>(map.geometry().sizeX));
+	const std::size_t cells = map.geometry().cellCount();
+	const auto withMemory = [&](std::vector<std::uint64_t> arrivals,
+								std::vector<std::uint64_t> leaving, std::uint64_t kept) {
+		std::vector<std::uint8_t> bytes = asVersion5(map);
+		bytes[versionPosition(bytes)] = 6;
+		std::vector<std::uint8_t> added(4);
+		putLE(added, 0, map.insertionOptions.insertionThreads, 4);
+		const auto append = [&](std::uint64_t v) {
+			added.resize(added.size() + 8);
+			putLE(added, added.size() - 8, v, 8);
+		};
+		for (const auto* list : {&arrivals, &leaving})
+		{
+			append(list->size());
+			for (const std::uint64_t idx : *list) append(idx);
+		}
+		append(kept);
+		const auto at = static_cast<std::ptrdiff_t>(
+			insertionStart(bytes) + kCloudsAt + kCloudOptionBytes);
+		bytes.insert(bytes.begin() + at, added.begin(), added.end());
+		reseal(bytes);
+		return bytes;
+	};
+	const std::vector<std::uint8_t> good = withMemory({cells - 1, 0, 17}, {3, 40, cells - 2}, 2);
+	CEvidentialGridMap2D back;
+	deserialize(good, back);
+	EXPECT_EQ(serialize(back), good);
+
+	for (const auto& bad :
+		 {withMemory({cells}, {}, 0), withMemory({}, {5, 5}, 0), withMemory({}, {6, 5}, 0),
+		  withMemory({}, {}, cells + 1)})
+	{
+		CEvidentialGridMap2D target;
+		try
+		{
+			deserialize(bad, target);
+			ADD_FAILURE() << "a forged motion memory was read";
+		}
+		catch (const std::exception& e)
+		{
+			EXPECT_NE(std::string(e.what()).find("corrupted"), std::string::npos) << e.what();
+		}
+		EXPECT_TRUE(target.isEmpty());
+	}
+	// A count beyond the grid is refused before its cells are looked for.
+	std::vector<std::uint8_t> huge = withMemory({}, {}, 0);
+	putLE(huge, insertionStart(huge) + kCloudsAt + kCloudOptionBytes + 4, std::uint64_t(1) << 60, 8);
+	reseal(huge);
+	CEvidentialGridMap2D target;
+	EXPECT_ANY_THROW(deserialize(huge, target));
+}
+
 TEST(MapIO, VersionFourFilesStillLoad)
 {
 	// Version 4 marked no cell as one that flips; one that does is a
 	// damaged file.
-	const CEvidentialGridMap2D original = mapWithEveryOption();
+	CEvidentialGridMap2D original = mapWithEveryOption();
+	original.insertionOptions.insertionThreads = 1;  // not kept before version 6
 	CEvidentialGridMap2D back;
 	deserialize(asVersion4(original), back);
 	expectSameMap(original, back);

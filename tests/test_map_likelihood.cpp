@@ -200,6 +200,56 @@ TEST(Likelihood, OnlyScansCanBeScored)
 	EXPECT_TRUE(map.canComputeObservationLikelihood(scan));
 }
 
+TEST(Likelihood, ScansInsertionIgnoresAreNotScored)
+{
+	// A scan whose sensor tilts beyond horizontalTolerance (insertion
+	// ignores it), whether mounted so or carried by a tilted robot, scores 0,
+	// and canComputeObservationLikelihood says so for the mounting it sees.
+	CEvidentialGridMap2D map;
+	buildRoomMap(map);
+	const CPose2D pose(0.5, -1.0, deg(30));
+	const auto level = castScan(room(), pose, 1.0);
+	ASSERT_NE(score(map, level, pose), 0.0);
+	auto pitched = level;
+	pitched.sensorPose = CPose3D(0, 0, 0.3, 0, deg(30), 0);
+	EXPECT_FALSE(map.canComputeObservationLikelihood(pitched));
+	EXPECT_EQ(score(map, pitched, pose), 0.0);
+	EXPECT_TRUE(map.canComputeObservationLikelihood(level));
+	const CPose3D tiltedRobot(pose.x(), pose.y(), 0, pose.phi(), 0, deg(25));
+	EXPECT_EQ(map.computeObservationLikelihood(level, tiltedRobot), 0.0);
+	map.insertionOptions.horizontalTolerance = deg(40);
+	EXPECT_TRUE(map.canComputeObservationLikelihood(pitched));
+	EXPECT_NE(map.computeObservationLikelihood(level, tiltedRobot), 0.0);
+}
+
+TEST(Likelihood, RaysOfADenseScanEndWhereInsertionPutsThem)
+{
+	// 100,001 beams over half a turn, only the last valid, ending 20 m out
+	// near an obstacle that a one-beam scan placed along that beam's
+	// direction (+90 degrees counterclockwise, -90 clockwise): it scores as
+	// the same beam does in a scan of three; no drift over the rays before
+	// it (a float step turned 100,000 times put it 16 cm off).
+	for (const bool counterclockwise : {true, false})
+	{
+		CEvidentialGridMap2D map(-25.0, 25.0, -25.0, 25.0, 0.05);
+		map.insertionOptions.maxRange = 30.0;
+		map.likelihoodOptions.maxRange = 30.0;
+		map.likelihoodOptions.decimation = 1;
+		const double side = counterclockwise ? 1.0 : -1.0;
+		map.insertObservation(
+			test::arcScan(1, 20.0, test::ScanSetup().maxRange(30.0)),
+			CPose3D(0, 0, 0, side * M_PI / 2, 0, 0));
+		const auto lastBeamOnly = [&](std::size_t n) {
+			return test::scanByIndex(
+				n, test::ScanSetup().maxRange(30.0).rightToLeft(counterclockwise),
+				[n](std::size_t i) { return test::Beam{20.0, i == n - 1}; });
+		};
+		const double alone = score(map, lastBeamOnly(3), CPose2D());
+		EXPECT_NEAR(score(map, lastBeamOnly(100001), CPose2D()), alone, 1e-9)
+			<< (counterclockwise ? "counterclockwise" : "clockwise");
+	}
+}
+
 TEST(Likelihood, ScanWithoutValidRaysScoresZero)
 {
 	CEvidentialGridMap2D map;
@@ -246,16 +296,18 @@ TEST(Likelihood, NeverSeenCellsAndDecimation)
 
 TEST(Likelihood, TinySigmaStaysFinite)
 {
-	// The Gaussian term underflows to 0; the random term keeps the log finite,
-	// and without it the log of the Gaussian is exact.
+	// The Gaussian term underflows to 0 for rays that end a cell or more
+	// from an obstacle (the scan scored 0.2 m from where it was taken); the
+	// random term keeps the log finite, and without it the log of the
+	// Gaussian is exact.
 	CEvidentialGridMap2D map;
 	buildRoomMap(map);
-	const CPose2D pose(0.5, -1.0, deg(30));
+	const CPose2D pose(0.5, -1.0, deg(30)), off(0.7, -1.0, deg(30));
 	const auto scan = castScan(room(), pose, 100.0);
 	map.likelihoodOptions.sigma = 1e-4;
-	EXPECT_TRUE(std::isfinite(score(map, scan, pose)));
+	EXPECT_TRUE(std::isfinite(score(map, scan, off)));
 	map.likelihoodOptions.zRandom = 0.0;
-	const double s = score(map, scan, pose);
+	const double s = score(map, scan, off);
 	EXPECT_TRUE(std::isfinite(s));
 	EXPECT_LT(s, -1e3);
 }

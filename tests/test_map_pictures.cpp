@@ -376,6 +376,13 @@ TEST(MapPictures, SavedRepresentationWritesEightFilesAndNoTemporary)
 	// Writing again replaces the files, still without leftovers.
 	map.saveMetricMapRepresentationToFile(prefix);
 	EXPECT_EQ(test::filesIn(dir).size(), 8u);
+
+	// A prefix naming a folder would write hidden files: refused before
+	// anything is written.
+	for (const std::string& folder : {(dir / "").string(), std::string()})
+		EXPECT_THROW(map.saveMetricMapRepresentationToFile(folder), std::invalid_argument)
+			<< "'" << folder << "'";
+	EXPECT_EQ(test::filesIn(dir).size(), 8u);
 }
 
 TEST(MapPictures, GeometryTextGivesLengthsToTheNanometre)

@@ -3,7 +3,8 @@
  * it came (with weaker and, pushed slowly, with stronger masses too), no
  * arrival kept at the edge of a moved thing's new shadow, the
  * walls left alone under pose noise and by scans whose pose is off, the
- * window, and what survives a copy and a file. */
+ * window, and what survives a copy and a file (the layer goes on after
+ * either as in the original). */
 #include <gtest/gtest.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt_evidential/CEvidentialGridMap2D.h>
@@ -377,5 +378,28 @@ TEST(Motion, EventsSurviveCopiesAndFiles)
 		CEvidentialGridMap2D next = *other;
 		replayMovingBox(next, 64, 64);
 		EXPECT_GE(next.countMotion().appeared, map.countMotion().appeared);
+	}
+}
+
+TEST(Motion, CopiesAndFilesGoOnAsTheOriginal)
+{
+	// The detector's lists (recent arrivals, departures under way) decide
+	// later scans: a copy (a particle of rbpf-slam), a moved map and a map
+	// read back from its file must decide them as the original does.
+	for (const int cut : {60, 61, 62, 64, 66})
+	{
+		CEvidentialGridMap2D map = roomMap();
+		replayMovingBox(map, 0, cut);
+		CEvidentialGridMap2D copy = map, assigned, back, source = map;
+		assigned = map;
+		CEvidentialGridMap2D moved = std::move(source);
+		test::deserialize(test::serialize(map), back);
+		replayMovingBox(map, cut + 1, 80);
+		const std::vector<std::uint8_t> expected = test::serialize(map);
+		for (CEvidentialGridMap2D* other : {&copy, &assigned, &moved, &back})
+		{
+			replayMovingBox(*other, cut + 1, 80);
+			EXPECT_TRUE(test::serialize(*other) == expected) << "cut after scan " << cut;
+		}
 	}
 }

@@ -100,15 +100,17 @@ inline void checkMap(const mrpt_evidential::CEvidentialGridMap2D& map)
 	if (!defect.empty()) fail(defect);
 }
 
-/** MRPT's object header of the map: 0x80 | name length, the class name, the
- * version byte. */
-inline std::vector<std::uint8_t> mapHeader()
+/** MRPT's object header of the map as it writes it now: 0x80 | name
+ * length, the class name, the current version byte. */
+inline const std::vector<std::uint8_t>& mapHeader()
 {
-	const std::string name = "mrpt_evidential::CEvidentialGridMap2D";
-	std::vector<std::uint8_t> out{static_cast<std::uint8_t>(0x80 | name.size())};
-	out.insert(out.end(), name.begin(), name.end());
-	out.push_back(0);
-	return out;
+	static const std::vector<std::uint8_t> header = [] {
+		const std::vector<std::uint8_t> bytes = mrpt_evidential::test::serialize(
+			mrpt_evidential::CEvidentialGridMap2D(0.0, 1.0, 0.0, 1.0, 1.0));
+		const auto size = static_cast<std::ptrdiff_t>(mrpt_evidential::test::payloadStart(bytes));
+		return std::vector<std::uint8_t>(bytes.begin(), bytes.begin() + size);
+	}();
+	return header;
 }
 
 /** A whole serialized map around a payload: header, payload, the checksum

@@ -1,5 +1,5 @@
 /* Fuzz target: reading a serialized map. The first byte picks the mode:
- * even, the rest is the payload of a version-0 map, framed here with MRPT's
+ * even, the rest is the payload of a map of the current version, framed here with MRPT's
  * header, the checksum it should have and the end marker, so that mutations
  * reach the checks behind the checksum; odd, the rest is the raw stream.
  * A read may throw (std::exception); when it succeeds the map must be valid,

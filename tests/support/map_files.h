@@ -35,6 +35,7 @@ inline CEvidentialGridMap2D mapWithEveryOption(double resolution = 0.1)
 	map.insertionOptions.minObstacleHeight = 0.15;
 	map.insertionOptions.maxObstacleHeight = 2.5;
 	map.insertionOptions.groundReturns = GroundReturns::Nothing;
+	map.insertionOptions.insertionThreads = 2;
 	map.likelihoodOptions.sigma = 0.2;
 	map.likelihoodOptions.decimation = 3;
 	map.likelihoodOptions.unknownAsNeutral = false;
@@ -84,6 +85,7 @@ inline void expectSameMap(const CEvidentialGridMap2D& a, const CEvidentialGridMa
 	EXPECT_EQ(ia.conflictHandling, ib.conflictHandling);
 	EXPECT_EQ(ia.growthMargin, ib.growthMargin);
 	EXPECT_EQ(ia.freeMargin, ib.freeMargin);
+	EXPECT_EQ(ia.insertionThreads, ib.insertionThreads);
 	EXPECT_EQ(ia.motionWindow, ib.motionWindow);
 	EXPECT_EQ(ia.groundRemoval, ib.groundRemoval);
 	EXPECT_EQ(ia.minObstacleHeight, ib.minObstacleHeight);

@@ -317,11 +317,14 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	 * z = 0, as COccupancyGridMap2D gives its own (a CMetricMap virtual since
 	 * MRPT 2.11.3). */
 	mrpt::math::TBoundingBoxf boundingBox() const MRPT_EVIDENTIAL_OVERRIDE_SINCE_2_11_3;
-	/** Writes savePictures(`<prefix>_`), `<prefix>_info.txt` (geometry, options and
-	 * counts per decision) and `<prefix>.evgrid` (the serialized map), each
-	 * atomically. \throws std::invalid_argument, before writing anything,
-	 *  if an option set in code is invalid (the map could not be read back);
-	 *  std::runtime_error if a file cannot be written. */
+	/** Writes savePictures(`<prefix>_`), `<prefix>.3Dscene` (saveAsScene()),
+	 * `<prefix>_info.txt` (geometry, options and counts per decision) and
+	 * `<prefix>.evgrid` (the serialized map), each atomically.
+	 * \throws std::invalid_argument, before writing anything, if the prefix
+	 *  is empty or ends in '/' (it names a folder: the files would be hidden
+	 *  ones, `out/.evgrid`) or an option set in code is invalid (the map
+	 *  could not be read back); std::runtime_error if a file cannot be
+	 *  written. */
 	void saveMetricMapRepresentationToFile(
 		const std::string& filNamePrefix) const override;
 	/** One line: geometry, insertions and counts per decision. */
@@ -340,7 +343,12 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	 * \throws std::invalid_argument if renderingOptions is invalid (set in
 	 *  code: TRenderingOptions::validate()); `o` is then unchanged. */
 	void getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const override;
-	/** 0: the map takes no part in point matching. */
+	/** 0: the map takes no part in point matching. Point matching itself
+	 * (determineMatching2D(), determineMatching3D(),
+	 * squareDistanceToClosestCorrespondence()) is not implemented: MRPT's
+	 * CMetricMap throws std::logic_error ("Virtual method not
+	 * implemented in derived class"), as it does for COccupancyGridMap2D; ICP matches a
+	 * CMultiMetricMap's points map instead. */
 	float compute3DMatchingRatio(
 		const mrpt::maps::CMetricMap* otherMap,
 		const mrpt::poses::CPose3D& otherMapPose,
@@ -440,20 +448,23 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 
 	EvidentialGridStorage m_grid;
 	std::size_t m_maxCells = kDefaultMaxCells;
-	/** The tilted-scan message is printed once per map, the cell-budget
-	 * one at the first partly inserted observation. */
-	bool m_tiltNoticeShown = false;
+	/** The tilted-scan and the upside-down-cloud messages are printed once
+	 * per map each, the cell-budget one at the first partly inserted
+	 * observation. */
+	bool m_tiltNoticeShown = false, m_upsideDownNoticeShown = false;
 	std::size_t m_partlyInserted = 0;  //!< partlyInsertedCount()
 
-	/** What the map keeps beside its cells, not part of its value: the
-	 * insertion's scratch space (a scan's polar grid and its transform) and
-	 * the likelihood field (per cell, the distance to the nearest obstacle,
-	 * built on first use under a lock and dropped on every change). Defined
-	 * in src/map/MapWorkspace.h. */
+	/** What the map keeps beside its cells: the insertion's scratch space
+	 * (a scan's polar grid and its transform), the likelihood field (per
+	 * cell, the distance to the nearest obstacle, built on first use under
+	 * a lock and dropped on every change), and the motion layer's memory
+	 * between scans (part of the map's value: copied and saved). Defined in
+	 * src/map/MapWorkspace.h. */
 	struct TWorkspace;
 	struct LikelihoodField;
-	/** Owns a TWorkspace. A copy gets scratch space of its own and shares the
-	 * source's likelihood field, read under the source's lock. */
+	/** Owns a TWorkspace. A copy gets scratch space of its own, the
+	 * source's motion memory, and shares the source's likelihood field, read
+	 * under the source's lock. */
 	class CWorkspace
 	{
 	   public:

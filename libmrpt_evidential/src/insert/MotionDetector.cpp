@@ -267,6 +267,32 @@ void CMotionDetector::settleDeparture(
 	grid.setEvent(idx, CellEvent::None);
 }
 
+CMotionDetector::TMemory CMotionDetector::memory(const EvidentialGridStorage& grid) const
+{
+	TMemory kept;
+	if (m_listedLayout == 0) return kept;
+	const bool grown = grid.layout() != m_listedLayout;
+	if (grown && grid.grownFromLayout() != m_listedLayout) return kept;
+	kept.arrivals = m_arrivals;
+	kept.leaving = m_leaving;
+	kept.leavingKept = m_leavingKept;
+	if (grown)
+	{
+		// Growth keeps the cells' order: the leaving list stays sorted.
+		for (std::size_t& idx : kept.arrivals) idx = grid.indexAfterGrowth(idx);
+		for (std::size_t& idx : kept.leaving) idx = grid.indexAfterGrowth(idx);
+	}
+	return kept;
+}
+
+void CMotionDetector::restore(const EvidentialGridStorage& grid, TMemory memory)
+{
+	m_arrivals = std::move(memory.arrivals);
+	m_leaving = std::move(memory.leaving);
+	m_leavingKept = memory.leavingKept;
+	m_listedLayout = grid.layout();
+}
+
 void CMotionDetector::listScanLeaving()
 {
 	if (m_scanLeaving.empty()) return;

@@ -166,22 +166,11 @@ class CMotionDetector
 	void judgeCrossedArrivals(const EvidentialGridStorage& grid, Crossed&& crossed)
 	{
 		// A grid grown into a new block keeps its cells where they were, at
-		// other indices: the lists follow them. One reset or read from a
-		// file holds other cells: the lists start again (its arrivals then
-		// last their window at most). Growth into the room the grid kept
-		// moves no cell.
-		if (grid.layout() != m_listedLayout)
-		{
-			if (m_listedLayout != 0 && grid.grownFromLayout() == m_listedLayout)
-			{
-				// The same order: a cell's row and column move by constants.
-				for (std::size_t& idx : m_arrivals) idx = grid.indexAfterGrowth(idx);
-				for (std::size_t& idx : m_leaving) idx = grid.indexAfterGrowth(idx);
-			}
-			else
-				m_arrivals.clear(), m_leaving.clear(), m_leavingKept = 0;
-		}
-		m_listedLayout = grid.layout();
+		// other indices: the lists follow them. A grid reset holds other
+		// cells: the lists start again (its arrivals then last their window
+		// at most). Growth into the room the grid kept moves no cell; a map
+		// read from its file restores the lists (restore()).
+		if (grid.layout() != m_listedLayout) restore(grid, memory(grid));
 		std::size_t kept = 0;
 		for (const std::size_t idx : m_arrivals)
 		{
@@ -191,6 +180,26 @@ class CMotionDetector
 		}
 		m_arrivals.resize(kept);
 	}
+	/** What the detector remembers from one scan to the next, part of the
+	 * map's value (a copy, or a map read back from its file, must decide
+	 * later scans as the original does): the recent arrivals, in the order
+	 * they were set, and the departures under way, sorted, as indices of the
+	 * grid's cells. */
+	struct TMemory
+	{
+		std::vector<std::size_t> arrivals, leaving;
+		/** The leaving list's length after its latest pruning (settle()). */
+		std::size_t leavingKept = 0;
+	};
+	/** The memory in the indices of `grid` as it is now: followed through
+	 * a growth into a new block since the latest scan, empty when the lists
+	 * belong to another grid (one reset or read since). */
+	TMemory memory(const EvidentialGridStorage& grid) const;
+	/** Takes `memory` for the cells of `grid` as it is now. Its indices must
+	 * be cells of `grid` and `leaving` sorted, without repeats (a file's
+	 * reader checks both). */
+	void restore(const EvidentialGridStorage& grid, TMemory memory);
+
 	/** Appends the candidates `band` collected (a detector that only ran
 	 * afterFusion() over a band of the scan's rows) to this scan's, and
 	 * clears them there. */
@@ -306,8 +315,8 @@ class CMotionDetector
 	std::vector<std::size_t> m_arrivals;
 	/** Cells set Leaving as departures under way, sorted, at their indices
 	 * in the grid of layout `m_listedLayout` (followed when the grid grows
-	 * into a new block; a grid reset or read from a file starts the list
-	 * again, and its leaving cells are then judged as pending arrivals are);
+	 * into a new block; a grid reset starts the list again, and its leaving
+	 * cells are then judged as pending arrivals are);
 	 * those set by the scan being settled, merged once it is. A cell
 	 * judged since may stay listed until the list is pruned (settle()). */
 	std::vector<std::size_t> m_leaving, m_scanLeaving;

@@ -123,6 +123,9 @@ CEvidentialGridMap2D::CWorkspace::CWorkspace()
 CEvidentialGridMap2D::CWorkspace::CWorkspace(const CWorkspace& other)
 	: CWorkspace()
 {
+	// The copied grid keeps the source's layout: the motion memory's
+	// indices hold for it.
+	m_work->motion = other->motion;
 	std::lock_guard<std::mutex> lock(other->likelihoodMutex);
 	m_work->likelihood = other->likelihood;
 }
@@ -132,6 +135,7 @@ CEvidentialGridMap2D::CWorkspace& CEvidentialGridMap2D::CWorkspace::operator=(
 {
 	if (this != &other)
 	{
+		m_work->motion = other->motion;
 		std::scoped_lock lock(m_work->likelihoodMutex, other->likelihoodMutex);
 		m_work->likelihood = other->likelihood;
 	}

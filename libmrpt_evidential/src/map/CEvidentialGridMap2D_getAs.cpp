@@ -325,6 +325,12 @@ std::string CEvidentialGridMap2D::geometryText(const std::string& indent) const
 void CEvidentialGridMap2D::saveMetricMapRepresentationToFile(
 	const std::string& filNamePrefix) const
 {
+	// A prefix that names a folder (out/, or nothing) would write hidden
+	// files (out/.evgrid) beside pictures named _map.png.
+	if (filNamePrefix.empty() || filNamePrefix.back() == '/')
+		throw std::invalid_argument(
+			"CEvidentialGridMap2D::saveMetricMapRepresentationToFile: the prefix '" +
+			filNamePrefix + "' names a folder, not the files' name (e.g. out/map)");
 	// Before any file: the .evgrid's write would refuse them after the pictures.
 	detail::validateSavedOptions(
 		insertionOptions, likelihoodOptions, renderingOptions, geometry().resolution);

@@ -174,10 +174,10 @@ bool CEvidentialGridMap2D::insertCloud(
 	// has no ground under it.
 	if (!(robotPose.getRotationMatrix()(2, 2) > 0.0))
 	{
-		if (!m_tiltNoticeShown)
+		if (!m_upsideDownNoticeShown)
 			std::cerr << "[CEvidentialGridMap2D] note: clouds taken by a robot "
 						 "whose z axis points down are ignored (shown once)\n";
-		m_tiltNoticeShown = true;
+		m_upsideDownNoticeShown = true;
 		return false;
 	}
 

@@ -1,7 +1,7 @@
 /* mrpt-evidential: Dempster-Shafer occupancy grids for MRPT.
  * CEvidentialGridMap2D: serialization (CSerializable).
  *
- * Layout of version 5, after MRPT's object header (class name, version byte),
+ * Layout of version 6, after MRPT's object header (class name, version byte),
  * every number little-endian:
  *   geometry     f64 xMin, f64 yMin, f64 resolution, i32 sizeX, i32 sizeY
  *   budget       u64 maxCells
@@ -13,7 +13,12 @@
  *                f64 growthMargin, f64 motionWindow, f64 motionMinConflict,
  *                f64 motionClearance, u8 groundRemoval,
  *                f64 minObstacleHeight, f64 maxObstacleHeight,
- *                u8 groundReturns
+ *                u8 groundReturns, u32 insertionThreads
+ *   motion       what the motion layer remembers between scans
+ *                (CMotionDetector::TMemory), cells as packed indices
+ *                (row * sizeX + column): u64 count A, A x u64 recent
+ *                arrivals in the order they were set; u64 count L, L x u64
+ *                departures under way, ascending; u64 leavingKept
  *   likelihood   f64 occupiedMass, f64 maxCorrsDistance, f64 sigma, f64 zHit,
  *                f64 zRandom, f64 maxRange, u32 decimation,
  *                u8 unknownAsNeutral
@@ -31,6 +36,8 @@
  *                free and occupied masses (QuantizedCell); the stamp's
  *                bit 15 says that the motion layer saw the cell flip
  *                (kFlipped)
+ * Version 5 had no insertionThreads (read as 1) and no motion memory (its
+ * maps start the lists again, as a reset map does).
  * Version 4 had that bit always 0 (its maps remember no flips).
  * Version 3 had no rendering options (read as the defaults).
  * Version 2 had no cloud options (groundRemoval to groundReturns: read as
@@ -53,10 +60,12 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "map/MapWorkspace.h"
 #include "map/OptionsCheck.h"
 
 using namespace mrpt_evidential;
@@ -160,6 +169,49 @@ bool readBool(CArchive& in, const char* field)
 	return v == 1;
 }
 
+/** The motion memory's cells as packed indices (the file's order). */
+void writeMotionMemory(CArchive& ar, const GridGeometry& g, const CMotionDetector::TMemory& m)
+{
+	const auto packed = [&](std::size_t idx) {
+		return static_cast<std::uint64_t>(g.rowOf(idx)) * static_cast<std::uint64_t>(g.sizeX) +
+			static_cast<std::uint64_t>(g.columnOf(idx));
+	};
+	for (const std::vector<std::size_t>* list : {&m.arrivals, &m.leaving})
+	{
+		ar << static_cast<std::uint64_t>(list->size());
+		for (const std::size_t idx : *list) ar << packed(idx);
+	}
+	ar << static_cast<std::uint64_t>(m.leavingKept);
+}
+
+/** Reads what writeMotionMemory() wrote for a grid of `cellCount` cells, as
+ * packed indices; checks them (in the grid, the departures ascending). */
+CMotionDetector::TMemory readMotionMemory(CArchive& ar, std::size_t cellCount)
+{
+	CMotionDetector::TMemory m;
+	for (std::vector<std::size_t>* list : {&m.arrivals, &m.leaving})
+	{
+		// Each list names each cell once at most: a count beyond the grid
+		// is corrupted. Memory follows the data read, not the count.
+		const auto count = ar.ReadAs<std::uint64_t>();
+		if (count > cellCount) corrupted("a motion list longer than the grid");
+		list->reserve(static_cast<std::size_t>(std::min<std::uint64_t>(count, kCellsPerBlock)));
+		for (std::uint64_t i = 0; i < count; ++i)
+		{
+			const auto packed = ar.ReadAs<std::uint64_t>();
+			if (packed >= cellCount) corrupted("a motion list names a cell outside the grid");
+			list->push_back(static_cast<std::size_t>(packed));
+		}
+	}
+	if (std::adjacent_find(m.leaving.begin(), m.leaving.end(), std::greater_equal<>()) !=
+		m.leaving.end())
+		corrupted("the departures under way are not in ascending order");
+	const auto kept = ar.ReadAs<std::uint64_t>();
+	if (kept > cellCount) corrupted("a motion list's kept length beyond the grid");
+	m.leavingKept = static_cast<std::size_t>(kept);
+	return m;
+}
+
 void putU16(std::uint8_t* p, std::uint16_t v)
 {
 	p[0] = static_cast<std::uint8_t>(v & 0xFF);
@@ -171,7 +223,7 @@ std::uint16_t getU16(const std::uint8_t* p)
 }
 }  // namespace
 
-uint8_t CEvidentialGridMap2D::serializeGetVersion() const { return 5; }
+uint8_t CEvidentialGridMap2D::serializeGetVersion() const { return 6; }
 
 void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 {
@@ -199,6 +251,8 @@ void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 	writeEnum(ar, io.groundRemoval);
 	ar << io.minObstacleHeight << io.maxObstacleHeight;
 	writeEnum(ar, io.groundReturns);
+	ar << static_cast<std::uint32_t>(io.insertionThreads);
+	writeMotionMemory(ar, g, m_workspace->motion.memory(m_grid));
 
 	const TLikelihoodOptions& lo = likelihoodOptions;
 	ar << lo.occupiedMass << lo.maxCorrsDistance << lo.sigma << lo.zHit
@@ -248,10 +302,10 @@ void CEvidentialGridMap2D::serializeTo(CArchive& out) const
 void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 {
 	// Said in words: a fleet whose robots run different releases meets it.
-	if (version > 5)
+	if (version > 6)
 		throw std::runtime_error(
 			"CEvidentialGridMap2D: a map of format version " + std::to_string(version) +
-			", saved by a newer mrpt-evidential; this one reads versions 0 to 5");
+			", saved by a newer mrpt-evidential; this one reads versions 0 to 6");
 
 	// Everything goes into locals: the map changes only once all is read,
 	// checked and validated.
@@ -292,6 +346,12 @@ void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 		io.groundRemoval = readEnum<GroundRemoval>(ar, "groundRemoval");
 		ar >> io.minObstacleHeight >> io.maxObstacleHeight;
 		io.groundReturns = readEnum<GroundReturns>(ar, "groundReturns");
+	}
+	CMotionDetector::TMemory motion;
+	if (version >= 6)
+	{
+		io.insertionThreads = ar.ReadAs<std::uint32_t>();
+		motion = readMotionMemory(ar, g.cellCount());
 	}
 
 	TLikelihoodOptions lo;
@@ -395,8 +455,12 @@ void CEvidentialGridMap2D::serializeFrom(CArchive& in, uint8_t version)
 		corrupted(e.what());
 	}
 
+	for (std::size_t& idx : motion.arrivals) idx = grid.geometry().indexOfPacked(idx);
+	for (std::size_t& idx : motion.leaving) idx = grid.geometry().indexOfPacked(idx);
+
 	// Commit: nothing below can fail (maxCells > 0 was checked).
 	m_grid = std::move(grid);
+	m_workspace->motion.restore(m_grid, std::move(motion));
 	m_partlyInserted = 0;
 	setMaxCells(static_cast<std::size_t>(maxCells));
 	insertionOptions = io;

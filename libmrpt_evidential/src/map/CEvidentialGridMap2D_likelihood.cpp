@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "insert/PolarToCartesian.h"
 #include "map/ConfigReading.h"
 #include "map/MapWorkspace.h"
 
@@ -366,9 +367,11 @@ std::shared_ptr<const CEvidentialGridMap2D::LikelihoodField>
 	return cached;
 }
 
-/* Only CObservation2DRangeScan is scored: any other observation gives 0 (a
- * log-likelihood that changes no particle weight), and
- * internal_canComputeObservationLikelihood() says so beforehand. */
+/* Only CObservation2DRangeScan is scored, as insertion reads it: any other
+ * observation, and a scan whose sensor tilts beyond horizontalTolerance
+ * (insertion ignores it), gives 0 (a log-likelihood that changes no particle
+ * weight), and internal_canComputeObservationLikelihood() says so beforehand
+ * as far as the scan's mounting on the robot tells. */
 double CEvidentialGridMap2D::internal_computeObservationLikelihood(
 	const mrpt::obs::CObservation& obs,
 	const mrpt::poses::CPose3D& takenFrom) const
@@ -381,20 +384,33 @@ double CEvidentialGridMap2D::internal_computeObservationLikelihood(
 	const std::shared_ptr<const LikelihoodField> field = likelihoodField();
 
 	const mrpt::poses::CPose3D sensorPose = takenFrom + scan->sensorPose;
+	if (!planarSensorPose(sensorPose, insertionOptions.horizontalTolerance)) return 0.0;
 	const auto& R = sensorPose.getRotationMatrix();
 	const std::size_t n = scan->getScanSize();
 	const std::size_t decimation = opts.decimation;
 	// The rays' directions turn by a fixed angle from one scored ray to the
-	// next: one sin/cos for the scan, not one per ray. A single-beam scan
-	// looks straight ahead, as insertion reads it.
-	const double first = n > 1 ? scan->getScanAngle(0) : 0.0;
-	const double turn =
-		n > 1 ? (scan->getScanAngle(1) - first) * static_cast<double>(decimation) : 0.0;
-	double c = std::cos(first), s = std::sin(first);
+	// next: one sin/cos every kExactEvery scored rays, not one per ray, so
+	// that the rotations in between cannot drift. The angles in doubles, as
+	// insertion places the beams (MRPT's getScanAngle() is a float); a scan
+	// taken left to right runs the other way. A single-beam scan looks
+	// straight ahead, as insertion reads it.
+	const double aperture = scan->aperture;
+	const double first = n > 1 ? (scan->rightToLeft ? -0.5 : 0.5) * aperture : 0.0;
+	const double step = n > 1
+		? (scan->rightToLeft ? aperture : -aperture) / static_cast<double>(n - 1)
+		: 0.0;
+	const double turn = step * static_cast<double>(decimation);
+	constexpr std::size_t kExactEvery = 64;
+	double c = 1.0, s = 0.0;
 	const double turnC = std::cos(turn), turnS = std::sin(turn);
 	double logLikelihood = 0.0;
-	for (std::size_t i = 0; i < n; i += decimation)
+	for (std::size_t i = 0, k = 0; i < n; i += decimation, ++k)
 	{
+		if (k % kExactEvery == 0)
+		{
+			const double angle = first + step * static_cast<double>(i);
+			c = std::cos(angle), s = std::sin(angle);
+		}
 		const double r = scan->getScanRange(i);
 		if (scan->getScanRangeValidity(i) && std::isfinite(r) && r > 0.0 &&
 			r < opts.maxRange)
@@ -415,8 +431,10 @@ double CEvidentialGridMap2D::internal_computeObservationLikelihood(
 bool CEvidentialGridMap2D::internal_canComputeObservationLikelihood(
 	const mrpt::obs::CObservation& obs) const
 {
-	return dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs) !=
-		nullptr;
+	// The robot's own pose is not known here: a level robot is assumed, as
+	// MRPT's grid does.
+	const auto* scan = dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs);
+	return scan && planarSensorPose(scan->sensorPose, insertionOptions.horizontalTolerance);
 }
 
 }  // namespace mrpt_evidential

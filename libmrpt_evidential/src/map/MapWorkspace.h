@@ -25,6 +25,8 @@ struct CEvidentialGridMap2D::TWorkspace
 	CPolarSourceGrid sourceGrid;
 	CPolarToCartesian transform;
 	CScanImpacts impacts;
+	/** The motion layer's rules at work, with its memory between scans
+	 * (part of the map's value: copies and files keep it). */
 	CMotionDetector motion;
 	/** A band of the rows a scan informs, fused by one thread, with what it
 	 * collects: its candidate motion events (taken over by `motion` in

@@ -14,9 +14,13 @@
  * FMA is left out on purpose: fused multiply-adds round differently, and a
  * map must be the same bit for bit on every processor. Empty where the
  * mechanism is missing (another compiler or architecture), or when the build
- * defines MRPT_EVIDENTIAL_NO_CPU_CLONES (CMake: -DMRPT_EVIDENTIAL_AVX2=OFF). */
+ * defines MRPT_EVIDENTIAL_NO_CPU_CLONES (CMake: -DMRPT_EVIDENTIAL_AVX2=OFF).
+ * Empty under GCC's ThreadSanitizer too: the loader runs the copies' ifunc
+ * resolvers while it relocates the library, before ThreadSanitizer's
+ * runtime is up, and the process dies there (GCC 12, glibc 2.36). */
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && \
-	defined(__ELF__) && !defined(MRPT_EVIDENTIAL_NO_CPU_CLONES)
+	defined(__ELF__) && !defined(MRPT_EVIDENTIAL_NO_CPU_CLONES) && \
+	!defined(__SANITIZE_THREAD__)
 #define MRPT_EVIDENTIAL_CPU_CLONES \
 	__attribute__((target_clones("default", "avx2"), flatten))
 #else
