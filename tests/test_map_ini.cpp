@@ -181,6 +181,30 @@ TEST(MapIni, AValueMayBeFollowedByAComment)
 		loadError("[Map]\nevidentialGrid_count=1\n[Map_evidentialGrid_00_insertOpts]\nmuO=0,95\n")
 			.find("the decimal mark is a point"),
 		std::string::npos);
+
+	// A comment right after the value, without a space; booleans in any
+	// case, as MRPT's own maps read them.
+	const auto tight = mapsFrom(
+		"[Map]\nevidentialGrid_count=1\n[Map_evidentialGrid_00_insertOpts]\n"
+		"muO=0.85;occupied\nmuF=0.6#free\nmaxRange=11//range\ninvalidRangesAsFree=True\n"
+		"[Map_evidentialGrid_00_renderOpts]\nfreeColor=#445566;colour\nshowUnknown=YES\n");
+	const auto tightMap = tight.mapByClass<CEvidentialGridMap2D>();
+	ASSERT_TRUE(tightMap);
+	EXPECT_EQ(tightMap->insertionOptions.muO, 0.85);
+	EXPECT_EQ(tightMap->insertionOptions.muF, 0.6);
+	EXPECT_EQ(tightMap->insertionOptions.maxRange, 11.0);
+	EXPECT_TRUE(tightMap->insertionOptions.invalidRangesAsFree);
+	EXPECT_EQ(tightMap->renderingOptions.freeColor, mrpt::img::TColor(0x44, 0x55, 0x66));
+	EXPECT_TRUE(tightMap->renderingOptions.showUnknown);
+	// Text that is no comment is still refused.
+	EXPECT_NE(
+		loadError("[Map]\nevidentialGrid_count=1\n[Map_evidentialGrid_00_insertOpts]\nmuO=0.9 x\n")
+			.find("at most a comment"),
+		std::string::npos);
+	EXPECT_NE(
+		loadError("[Map]\nevidentialGrid_count=1\n[Map_evidentialGrid_00_insertOpts]\nmuO=0.9x\n")
+			.find("not a finite number"),
+		std::string::npos);
 }
 
 TEST(MapIni, InsertionOptionsRoundTripThroughIni)
@@ -420,14 +444,14 @@ TEST(BadOptions, WideLikelihoodMarginOnAThinMapAllocatesLittle)
 
 TEST(BadOptions, ExtremeLikelihoodOptionsGiveNumbers)
 {
-	// Valid, if absurd: squares of these overflow.
+	// Valid, if absurd: squares of these overflow (the cut at most 1000 m).
 	CEvidentialGridMap2D map = smallMap();
 	ASSERT_TRUE(map.insertObservation(wall(), CPose3D()));
 	auto& o = map.likelihoodOptions;
 	for (const auto& [sigma, cut, zHit, zRandom, range] :
 		 std::vector<std::tuple<double, double, double, double, double>>{
-			 {7.5e252, 7.5e252, 5.5e16, 9.4e11, 9.4e78},
-			 {1e-300, 1e300, 1.0, 0.0, 1e300},
+			 {7.5e252, 1000.0, 5.5e16, 9.4e11, 9.4e78},
+			 {1e-300, 1000.0, 1.0, 0.0, 1e300},
 			 {1e300, 1e-300, 0.0, 1e-300, 1e-300}})
 	{
 		o.sigma = sigma;

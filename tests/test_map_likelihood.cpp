@@ -188,6 +188,24 @@ TEST(Likelihood, ALongCutKeepsTheOwnPoseBest)
 	}
 }
 
+TEST(Likelihood, OccupiedMassOfOneFindsTheSurestCells)
+{
+	// No cell holds more than 0.9999: occupiedMass 1 takes the cells at
+	// that ceiling (walls seen from each pose four times, without decay,
+	// reach it), not none, so that a scan still scores best at its own pose.
+	CEvidentialGridMap2D map;
+	double t = 1.0;
+	for (int round = 0; round < 4; ++round)
+		for (const CPose2D& p : mappingPoses())
+			ASSERT_TRUE(map.insertObservation(castScan(room(), p, t++), CPose3D(p)));
+	map.likelihoodOptions.occupiedMass = 1.0;
+	const CPose2D truth(0.5, -1.0, deg(30));
+	const auto scan = castScan(room(), truth, 1.0);
+	const double own = score(map, scan, truth);
+	for (const auto& [name, moved] : perturbations(truth))
+		EXPECT_GT(own, score(map, scan, moved)) << "moved " << name;
+}
+
 TEST(Likelihood, OnlyScansCanBeScored)
 {
 	CEvidentialGridMap2D map;

@@ -65,7 +65,8 @@ TEST(LikelihoodOptions, InvalidValuesThrowNamingKeyAndValue)
 	const std::vector<Case> cases{
 		{"occupiedMass", "0"},		 {"occupiedMass", "1.5"},
 		{"occupiedMass", "nan"},	 {"maxCorrsDistance", "0"},
-		{"maxCorrsDistance", "inf"}, {"sigma", "-1"},
+		{"maxCorrsDistance", "inf"}, {"maxCorrsDistance", "1000.5"},
+		{"sigma", "-1"},
 		{"sigma", "abc"},			 {"sigma", "0.3x"},
 		{"zHit", "-0.1"},			 {"zRandom", "-2"},
 		{"maxRange", "0"},			 {"maxRange", "-5"},

@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -457,12 +458,33 @@ TEST(MapPictures, FailedWritesThrowAndLeaveNothing)
 		EXPECT_NE(std::string(e.what()).find("y_info.txt"), std::string::npos)
 			<< e.what();
 	}
-	// The pictures and the scene came first and are complete; nothing else
-	// is left.
-	EXPECT_EQ(
-		test::filesIn(dir),
-		(std::set<std::string>{
-			"y_map.png", "y_evidential.png", "y_betp.png", "y_conflict.png", "y_motion.png",
-			"y.3Dscene", "y_info.txt"}));
+	// All or none: the pictures and the scene written before the failure
+	// are not left either.
+	EXPECT_EQ(test::filesIn(dir), (std::set<std::string>{"y_info.txt"}));
 	EXPECT_TRUE(fs::is_directory(dir / "y_info.txt"));
+}
+
+TEST(MapPictures, AFailedSaveLeavesTheEarlierFilesTogether)
+{
+	// A save that fails at its last file (the map's, a folder in its place
+	// here; a full disk in use) replaces none of an earlier save's files:
+	// no new pictures beside the file of another map.
+	const fs::path dir = test::scratchDir("map_pictures", "together");
+	const std::string prefix = (dir / "z").string();
+	scannedMap().saveMetricMapRepresentationToFile(prefix);
+	std::map<std::string, std::string> before;
+	for (const std::string& name : test::filesIn(dir))
+		before[name] = readText(dir / name);
+	fs::remove(dir / "z.evgrid");
+	fs::create_directory(dir / "z.evgrid");
+	CEvidentialGridMap2D other = conflictingMap();
+	EXPECT_THROW(other.saveMetricMapRepresentationToFile(prefix), std::runtime_error);
+	for (const auto& [name, bytes] : before)
+	{
+		if (name != "z.evgrid")
+		{
+			EXPECT_EQ(readText(dir / name), bytes) << name;
+		}
+	}
+	EXPECT_EQ(test::filesIn(dir).size(), before.size()) << "no temporary file left";
 }

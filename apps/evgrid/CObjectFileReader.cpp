@@ -2,6 +2,8 @@
 
 #include "CObjectFileReader.h"
 
+#include <mrpt/system/os.h>
+
 #include <mrpt/serialization/CArchive.h>
 #include <fcntl.h>
 #include <sys/resource.h>
@@ -319,6 +321,12 @@ mrpt::serialization::CSerializable::Ptr CObjectFileReader::next()
 		// Our map names itself when its own data are bad (a checksum, a
 		// budget): that is the reason, whichever entry it is.
 		if (cause.rfind("CEvidentialGridMap2D: ", 0) == 0) fail(cause);
+		// A class this MRPT knows, in a newer format of it (a simplemap of
+		// MRPT 2.14 read with 2.5.8): whichever entry, say so.
+		if (cause.find("unknown serialization version") != std::string::npos)
+			fail(
+				"an object in a format that " + mrpt::system::MRPT_getVersion() +
+				" cannot read (" + cause + "): written by a newer MRPT?");
 		// The first bytes of a file that is not MRPT's make a garbage
 		// header, and MRPT's complaint about it would only confuse.
 		if (m_entry == 0)

@@ -66,7 +66,7 @@ std::string fileBehind(const std::string& path)
 }
 }  // namespace
 
-void writeFileAtomicallyByName(
+void CAtomicFileSet::addByName(
 	const std::string& requestedPath,
 	const std::function<bool(const std::string& temporaryPath)>& writer)
 {
@@ -91,14 +91,13 @@ void writeFileAtomicallyByName(
 	std::error_code ec;
 	if (!fs::is_regular_file(tmp, ec))
 		fail(path, tmp, "the temporary file '" + tmp + "' was not created");
-	fs::rename(tmp, path, ec);
-	if (ec) fail(path, tmp, "renaming '" + tmp + "' failed: " + ec.message());
+	m_staged.push_back({path, tmp});
 }
 
-void writeFileAtomically(
+void CAtomicFileSet::add(
 	const std::string& path, const std::function<void(std::ostream&)>& writer)
 {
-	writeFileAtomicallyByName(path, [&writer](const std::string& tmp) {
+	addByName(path, [&writer](const std::string& tmp) {
 		errno = 0;
 		std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
 		if (!f)
@@ -109,6 +108,49 @@ void writeFileAtomically(
 		f.close();	// flushes; a failed flush or close sets failbit
 		return !f.fail();
 	});
+}
+
+void CAtomicFileSet::commit()
+{
+	for (std::size_t i = 0; i < m_staged.size(); ++i)
+	{
+		std::error_code ec;
+		fs::rename(m_staged[i].temporaryPath, m_staged[i].path, ec);
+		if (ec)
+		{
+			const TStaged failed = m_staged[i];
+			m_staged.erase(m_staged.begin(), m_staged.begin() + static_cast<std::ptrdiff_t>(i + 1));
+			fail(failed.path, failed.temporaryPath,
+				 "renaming '" + failed.temporaryPath + "' failed: " + ec.message());
+		}
+	}
+	m_staged.clear();
+}
+
+CAtomicFileSet::~CAtomicFileSet()
+{
+	for (const TStaged& s : m_staged)
+	{
+		std::error_code ignored;
+		fs::remove(s.temporaryPath, ignored);
+	}
+}
+
+void writeFileAtomicallyByName(
+	const std::string& path,
+	const std::function<bool(const std::string& temporaryPath)>& writer)
+{
+	CAtomicFileSet one;
+	one.addByName(path, writer);
+	one.commit();
+}
+
+void writeFileAtomically(
+	const std::string& path, const std::function<void(std::ostream&)>& writer)
+{
+	CAtomicFileSet one;
+	one.add(path, writer);
+	one.commit();
 }
 
 }  // namespace mrpt_evidential::detail

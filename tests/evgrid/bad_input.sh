@@ -55,6 +55,13 @@ for claimed in '\377\377\377\177' '\000\000\000\020'; do
   contains "$ERR" "a size in it is corrupted"
   [ "$(fingerprint "$out")" = "$good" ] || fail "the failed run changed $out"
 done
+# An object in a newer format of its class (as MRPT 2.14 writes simplemaps
+# that 2.5.8 cannot read): the message says so, not "not a rawlog".
+cp "$T/plain.rawlog" "$T/newer.rawlog"
+name_length=$(( $(od -An -tu1 -N1 "$T/plain.rawlog") & 127 ))
+printf '\143' | dd of="$T/newer.rawlog" bs=1 seek=$((1 + name_length)) conv=notrunc status=none
+expect_failure "$T/newer.rawlog: entry 0 at byte 0: an object in a format that MRPT " -i "$T/newer.rawlog"
+contains "$ERR" "unknown serialization version number: '99'): written by a newer MRPT?"
 # Not a rawlog at all.
 printf 'time x y phi\n0 0 0 0\n' >"$T/text.rawlog"
 expect_failure "$T/text.rawlog: entry 0 at byte 0: not a rawlog, simplemap or map saved by MRPT" -i "$T/text.rawlog"

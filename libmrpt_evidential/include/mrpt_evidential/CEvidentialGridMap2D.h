@@ -227,7 +227,8 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	void saveAsROSMap(const std::string& prefix) const;
 	/** Writes the five pictures above as `<prefix>map.png`,
 	 * `<prefix>evidential.png`, `<prefix>betp.png`, `<prefix>conflict.png`
-	 * and `<prefix>motion.png` (pictureNames()), each atomically; the prefix
+	 * and `<prefix>motion.png` (pictureNames()), all or none (written
+	 * under temporary names, then renamed together); the prefix
 	 * is a folder ending in '/' or a file name's stem. Each file is the
 	 * picture (one pixel per cell, at its top left) above a strip with its
 	 * legend and a scale bar (doc/map.md, "Pictures"); `withLegend` false
@@ -319,7 +320,9 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	mrpt::math::TBoundingBoxf boundingBox() const MRPT_EVIDENTIAL_OVERRIDE_SINCE_2_11_3;
 	/** Writes savePictures(`<prefix>_`), `<prefix>.3Dscene` (saveAsScene()),
 	 * `<prefix>_info.txt` (geometry, options and counts per decision) and
-	 * `<prefix>.evgrid` (the serialized map), each atomically.
+	 * `<prefix>.evgrid` (the serialized map), all or none: each is written
+	 * under a temporary name first, and they replace the files of an
+	 * earlier call together, once all are written.
 	 * \throws std::invalid_argument, before writing anything, if the prefix
 	 *  is empty or ends in '/' (it names a folder: the files would be hidden
 	 *  ones, `out/.evgrid`) or an option set in code is invalid (the map
@@ -423,6 +426,9 @@ class CEvidentialGridMap2D : public mrpt::maps::CMetricMap
 	/** Fuses the workspace's polar grid, built for an observation of time
 	 * `stamp` taken at `sensor`. */
 	void fusePolarGrid(const PlanarSensorPose& sensor, mrpt::Clock::time_point stamp);
+	/** Writes saveAsScene()'s scene to `file` as it is (no temporary name);
+	 * false if MRPT fails to write it. */
+	bool writeScene(const std::string& file, const std::vector<mrpt::math::TPoint3D>& path) const;
 	/** \throws std::invalid_argument "... the WHAT's pose is not finite: ..."
 	 *  if a coordinate is not finite. */
 	static void requireFinitePose(const mrpt::poses::CPose3D& sensorPose, const char* what);

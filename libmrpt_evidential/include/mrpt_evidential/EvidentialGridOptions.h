@@ -170,12 +170,15 @@ struct TEvidentialLikelihoodOptions : public mrpt::config::CLoadableOptions
 	 * occupied mass with the conflict set aside, m(O) / (1 - m(empty)),
 	 * is >= this (m(O) itself for a cell without conflict; with
 	 * ConflictHandling::Keep wall surfaces are mostly conflict), (0, 1],
-	 * default 0.3. Only cells that have held an impact are obstacles:
-	 * the imprecise model draws walls a few cells thick, but the scans
-	 * being scored end where beams ended. */
+	 * default 0.3; above EvidentialGridStorage::kMaxCertainty (0.9999, the
+	 * most a cell holds) it acts as that. Only cells that have held an
+	 * impact are obstacles: the imprecise model draws walls a few cells
+	 * thick, but the scans being scored end where beams ended. */
 	double occupiedMass = 0.3;
 	/** `maxCorrsDistance`: distances to the nearest obstacle are cut at
-	 * this, metres, > 0, default 0.3. */
+	 * this, metres, (0, 1000], default 0.3 (the field's 253 steps of
+	 * distance would be metres wide beyond that). */
+	static constexpr double kMaxCorrsDistance = 1000.0;
 	double maxCorrsDistance = 0.3;
 	/** `sigma`: standard deviation of a hit, metres, > 0, default 0.35. */
 	double sigma = 0.35;

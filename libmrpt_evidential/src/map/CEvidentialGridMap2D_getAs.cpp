@@ -91,10 +91,19 @@ std::string yamlScalar(const std::string& s)
 	return q + "\"";
 }
 
-void savePicture(const std::string& path, const mrpt::img::CImage& img)
+/** Writes savePictures()'s pictures into `files`. */
+void stagePictures(
+	const CEvidentialGridMap2D& map, detail::CAtomicFileSet& files, const std::string& prefix,
+	bool withLegend)
 {
-	writeFileAtomicallyByName(
-		path, [&img](const std::string& tmp) { return img.saveToFile(tmp); });
+	mrpt::img::CImage img;
+	for (std::size_t i = 0; i < CEvidentialGridMap2D::pictureNames().size(); ++i)
+	{
+		map.getAsPicture(i, img, withLegend);
+		files.addByName(prefix + CEvidentialGridMap2D::pictureNames()[i], [&img](const std::string& tmp) {
+			return img.saveToFile(tmp);
+		});
+	}
 }
 }  // namespace
 
@@ -299,12 +308,9 @@ void CEvidentialGridMap2D::getAsChangesImage(
 
 void CEvidentialGridMap2D::savePictures(const std::string& prefix, bool withLegend) const
 {
-	mrpt::img::CImage img;
-	for (std::size_t i = 0; i < pictureNames().size(); ++i)
-	{
-		getAsPicture(i, img, withLegend);
-		savePicture(prefix + pictureNames()[i], img);
-	}
+	detail::CAtomicFileSet files;
+	stagePictures(*this, files, prefix, withLegend);
+	files.commit();
 }
 
 std::string CEvidentialGridMap2D::geometryText(const std::string& indent) const
@@ -334,10 +340,13 @@ void CEvidentialGridMap2D::saveMetricMapRepresentationToFile(
 	// Before any file: the .evgrid's write would refuse them after the pictures.
 	detail::validateSavedOptions(
 		insertionOptions, likelihoodOptions, renderingOptions, geometry().resolution);
-	savePictures(filNamePrefix + "_");
-	saveAsScene(filNamePrefix + ".3Dscene");
-
-	writeFileAtomically(filNamePrefix + "_info.txt", [this](std::ostream& os) {
+	// All or nothing: a failure (a full disk) leaves an earlier call's files
+	// as they were, not pictures of one map beside the file of another.
+	detail::CAtomicFileSet files;
+	stagePictures(*this, files, filNamePrefix + "_", true);
+	files.addByName(
+		filNamePrefix + ".3Dscene", [this](const std::string& tmp) { return writeScene(tmp, {}); });
+	files.add(filNamePrefix + "_info.txt", [this](std::ostream& os) {
 		const TDecisionCounts c = countDecisions();
 		os << "mrpt_evidential::CEvidentialGridMap2D\n"
 		   << geometryText() << "insertions: " << insertionCount() << "\n"
@@ -352,8 +361,9 @@ void CEvidentialGridMap2D::saveMetricMapRepresentationToFile(
 		genericMapParams.dumpToTextStream(os);
 	});
 
-	writeFileAtomically(filNamePrefix + ".evgrid", [this](std::ostream& os) {
+	files.add(filNamePrefix + ".evgrid", [this](std::ostream& os) {
 		auto ar = mrpt::serialization::archiveFrom<std::ostream>(os);
 		ar << *this;
 	});
+	files.commit();
 }

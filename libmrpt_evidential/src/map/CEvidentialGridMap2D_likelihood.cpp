@@ -196,8 +196,8 @@ std::optional<TInvalidOption> TEvidentialLikelihoodOptions::firstInvalid() const
 	const auto nonNegative = [](double v) { return v >= 0.0 && std::isfinite(v); };
 	if (!(occupiedMass > 0.0 && occupiedMass <= 1.0))
 		return TInvalidOption{"occupiedMass", "in (0, 1]", occupiedMass};
-	if (!positive(maxCorrsDistance))
-		return TInvalidOption{"maxCorrsDistance", "> 0 and finite", maxCorrsDistance};
+	if (!(positive(maxCorrsDistance) && maxCorrsDistance <= kMaxCorrsDistance))
+		return TInvalidOption{"maxCorrsDistance", "in (0, 1000] m", maxCorrsDistance};
 	if (!positive(sigma)) return TInvalidOption{"sigma", "> 0 and finite", sigma};
 	if (!nonNegative(zHit)) return TInvalidOption{"zHit", ">= 0 and finite", zHit};
 	if (!nonNegative(zRandom))
@@ -257,6 +257,10 @@ std::shared_ptr<const CEvidentialGridMap2D::LikelihoodField>
 	opts.validate();
 
 	const GridGeometry& map = m_grid.geometry();
+	// No cell holds more than the ceiling (within its rounding): a
+	// threshold above it would find no obstacle at all.
+	const double occupiedMass =
+		std::min(opts.occupiedMass, EvidentialGridStorage::kMaxCertainty - 2 * kQuantizationError);
 	auto field = std::make_shared<LikelihoodField>();
 	field->options = opts;
 	field->layout = m_grid.layout();
@@ -326,7 +330,7 @@ std::shared_ptr<const CEvidentialGridMap2D::LikelihoodField>
 			{
 				const std::size_t idx = map.index(cx, cy);
 				const Mass m = m_grid.read(idx);
-				obstacle = m_grid.heldImpact(idx) && occupiedShare(m) >= opts.occupiedMass;
+				obstacle = m_grid.heldImpact(idx) && occupiedShare(m) >= occupiedMass;
 				if (decide(m) != Decision::Unknown)
 					field->code[g.index(fx, fy)] = Field::kFarSeen;
 			}

@@ -291,6 +291,15 @@ void CEvidentialGridMap2D::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) 
 void CEvidentialGridMap2D::saveAsScene(
 	const std::string& path3Dscene, const std::vector<mrpt::math::TPoint3D>& path) const
 {
+	// Before the file: the writer reports its failures as the file's.
+	renderingOptions.validate();
+	detail::writeFileAtomicallyByName(
+		path3Dscene, [&](const std::string& tmp) { return writeScene(tmp, path); });
+}
+
+bool CEvidentialGridMap2D::writeScene(
+	const std::string& file, const std::vector<mrpt::math::TPoint3D>& path) const
+{
 	mrpt::opengl::COpenGLScene scene;
 	auto map = mrpt::opengl::CSetOfObjects::Create();
 	map->setName("evidentialGrid");
@@ -313,6 +322,5 @@ void CEvidentialGridMap2D::saveAsScene(
 				path[i].x - o.x, path[i].y - o.y, std::max(path[i].z, lift));
 		scene.insert(lines);
 	}
-	detail::writeFileAtomicallyByName(
-		path3Dscene, [&scene](const std::string& tmp) { return scene.saveToFile(tmp); });
+	return scene.saveToFile(file);
 }

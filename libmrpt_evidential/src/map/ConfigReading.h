@@ -9,6 +9,7 @@
 #include <mrpt/img/TColor.h>
 #include <mrpt/typemeta/TEnumType.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -34,21 +35,36 @@ namespace mrpt_evidential::detail
 		"[" + section + "] " + key + " = '" + value + "': " + expected);
 }
 
+/** A key's whole value as the file gives it (comment included), for
+ * messages: a value cut at a comment marker may not be what was meant. */
+inline std::string wholeValue(
+	const mrpt::config::CConfigFileBase& source, const std::string& section,
+	const std::string& key)
+{
+	return source.read_string(section, key, "", false);
+}
+
 /** A key's value, or "" when absent: one word, which may be followed by a
- * comment after `#` or `;` (MRPT itself strips `//` comments). MRPT's
- * read_string_first_word() would cut "0,95" at its comma and read 0.
+ * comment after `#`, `;` or `//`, with or without a space before it (a `#`
+ * that starts the value is a colour's). MRPT's read_string_first_word()
+ * would cut "0,95" at its comma and read 0.
  * \throws std::invalid_argument if other text follows the value. */
 inline std::string readWord(
 	const mrpt::config::CConfigFileBase& source, const std::string& section,
 	const std::string& key)
 {
 	const std::string text = source.read_string(section, key, "", false);
-	const auto end = text.find_first_of(" \t");
-	if (end == std::string::npos) return text;
+	const auto startsComment = [&](std::size_t i) {
+		return text[i] == '#' || text[i] == ';' || text.compare(i, 2, "//") == 0;
+	};
+	std::size_t end = 0;
+	while (end < text.size() && text[end] != ' ' && text[end] != '\t' &&
+		   !(end > 0 && startsComment(end)))
+		++end;
 	const auto next = text.find_first_not_of(" \t", end);
-	if (next != std::string::npos && text[next] != '#' && text[next] != ';')
+	if (next != std::string::npos && !startsComment(next))
 		throwBadValue(
-			section, key, text, "one value, then at most a comment after # or ;");
+			section, key, text, "one value, then at most a comment after #, ; or //");
 	return text.substr(0, end);
 }
 
@@ -88,7 +104,7 @@ inline void readDouble(
 	const double v = std::strtod(text.c_str(), &end);
 	if (end == text.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
 		throwBadValue(
-			section, key, text,
+			section, key, wholeValue(source, section, key),
 			text.find(',') == std::string::npos
 				? "not a finite number"
 				: "not a finite number (the decimal mark is a point)");
@@ -116,24 +132,27 @@ void readCount(
 	if (!(v >= 0.0) || v != std::floor(v) ||
 		v > static_cast<double>(std::numeric_limits<Unsigned>::max()))
 		throwBadValue(
-			section, key, readWord(source, section, key),
+			section, key, wholeValue(source, section, key),
 			"not a whole number >= 0 within range");
 	value = static_cast<Unsigned>(v);
 }
 
-/** Reads true/false (also 1/0, yes/no) when the key is present. */
+/** Reads true/false (also 1/0, yes/no, in any case, as MRPT's own
+ * readers take them) when the key is present. */
 inline void readBool(
 	const mrpt::config::CConfigFileBase& source, const std::string& section,
 	const std::string& key, bool& value)
 {
 	const std::string text = readWord(source, section, key);
 	if (text.empty()) return;
-	if (text == "true" || text == "1" || text == "yes")
+	std::string lower = text;
+	for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+	if (lower == "true" || lower == "1" || lower == "yes")
 		value = true;
-	else if (text == "false" || text == "0" || text == "no")
+	else if (lower == "false" || lower == "0" || lower == "no")
 		value = false;
 	else
-		throwBadValue(section, key, text, "not true or false");
+		throwBadValue(section, key, wholeValue(source, section, key), "not true or false");
 }
 
 /** Whether `value` is one of the enum's named members (MRPT_ENUM_TYPE): a
@@ -162,7 +181,7 @@ void readEnum(
 		std::string names;
 		for (const auto& entry : mrpt::typemeta::TEnumType<Enum>::getBimap())
 			names += (names.empty() ? "" : ", ") + entry.second;
-		throwBadValue(section, key, text, "not one of " + names);
+		throwBadValue(section, key, wholeValue(source, section, key), "not one of " + names);
 	}
 }
 
@@ -177,7 +196,7 @@ inline void readColor(
 	const std::string hex = text[0] == '#' ? text.substr(1) : text;
 	const bool valid = hex.size() == 6 &&
 		hex.find_first_not_of("0123456789abcdefABCDEF") == std::string::npos;
-	if (!valid) throwBadValue(section, key, text, "not a colour #RRGGBB");
+	if (!valid) throwBadValue(section, key, wholeValue(source, section, key), "not a colour #RRGGBB");
 	const unsigned long rgb = std::strtoul(hex.c_str(), nullptr, 16);
 	value = mrpt::img::TColor(
 		static_cast<std::uint8_t>(rgb >> 16), static_cast<std::uint8_t>(rgb >> 8),

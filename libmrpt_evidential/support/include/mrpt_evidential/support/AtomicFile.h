@@ -4,6 +4,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace mrpt_evidential::detail
 {
@@ -30,5 +31,40 @@ void writeFileAtomically(
 void writeFileAtomicallyByName(
 	const std::string& path,
 	const std::function<bool(const std::string& temporaryPath)>& writer);
+
+/** Several files replaced together, so that a failure leaves the previous
+ * files as they were rather than some new and some old: each is written
+ * under a temporary name first (the rules of writeFileAtomically()), and
+ * commit() renames them all once every one is written. A set destroyed
+ * before commit() removes its temporary files. */
+class CAtomicFileSet
+{
+   public:
+	CAtomicFileSet() = default;
+	CAtomicFileSet(const CAtomicFileSet&) = delete;
+	CAtomicFileSet& operator=(const CAtomicFileSet&) = delete;
+	~CAtomicFileSet();
+
+	/** Writes what will replace `path`, as writeFileAtomicallyByName().
+	 * \throws std::runtime_error as writeFileAtomicallyByName() (this
+	 *  file's temporary is removed; those of the others stay, for the
+	 *  destructor). */
+	void addByName(
+		const std::string& path,
+		const std::function<bool(const std::string& temporaryPath)>& writer);
+	/** Writes what will replace `path`, as writeFileAtomically(). */
+	void add(const std::string& path, const std::function<void(std::ostream&)>& writer);
+	/** Renames every file into place, in the order they were added.
+	 * \throws std::runtime_error naming the file if a rename fails (the
+	 *  files renamed before it stay replaced; the others are removed). */
+	void commit();
+
+   private:
+	struct TStaged
+	{
+		std::string path, temporaryPath;
+	};
+	std::vector<TStaged> m_staged;
+};
 
 }  // namespace mrpt_evidential::detail
