@@ -21,6 +21,7 @@
 #include <limits>
 #include <new>
 #include <stdexcept>
+#include <vector>
 
 #include "CommandLine.h"
 #include "GzipFile.h"
@@ -62,9 +63,24 @@ class CObjectFileReader::CZlibArchive : public mrpt::serialization::CArchive
 	}
 	bool isDirect() const { return gzdirect(m_f) != 0; }
 
-	/** Whether a read came short since the last reset. */
+	/** Whether a read came short since beginEntry(). */
 	bool hitEnd() const { return m_hitEnd; }
-	void resetHitEnd() { m_hitEnd = false; }
+	/** Before an entry is read: clears hitEnd() and starts keeping the
+	 * entry's first bytes (MRPT's object header: 0x80 | the class name's
+	 * length, then the name). */
+	void beginEntry()
+	{
+		m_hitEnd = false;
+		m_head.clear();
+	}
+	/** The class the entry's header names, or "" if not read that far. */
+	std::string entryClass() const
+	{
+		if (m_head.empty() || (m_head[0] & 0x80) == 0) return "";
+		const std::size_t length = m_head[0] & 0x7F;
+		if (m_head.size() < 1 + length) return "";
+		return std::string(m_head.begin() + 1, m_head.begin() + 1 + static_cast<std::ptrdiff_t>(length));
+	}
 
    protected:
 	std::size_t write(const void*, std::size_t) override
@@ -85,7 +101,12 @@ class CObjectFileReader::CZlibArchive : public mrpt::serialization::CArchive
 		}
 		// Whole or nothing: MRPT takes a short read for a complete one as
 		// long as it holds a byte, which would leave a field half read.
-		if (done == len) return done;
+		if (done == len)
+		{
+			const std::size_t keep = std::min(len, kHeadBytes - std::min(kHeadBytes, m_head.size()));
+			m_head.insert(m_head.end(), bytes, bytes + keep);
+			return done;
+		}
 		m_hitEnd = true;
 		return 0;
 	}
@@ -93,6 +114,9 @@ class CObjectFileReader::CZlibArchive : public mrpt::serialization::CArchive
    private:
 	gzFile m_f;
 	bool m_hitEnd = false;
+	/** The longest object header: a length byte and 127 characters. */
+	static constexpr std::size_t kHeadBytes = 128;
+	std::vector<unsigned char> m_head;
 };
 
 CObjectFileReader::CObjectFileReader(const std::string& path)
@@ -294,7 +318,16 @@ mrpt::serialization::CSerializable::Ptr CObjectFileReader::next()
 		}
 	}
 
-	m_archive->resetHitEnd();
+	m_archive->beginEntry();
+	// MRPT changed this class's stream under the same version (2.11.4): a
+	// file of the other release fails inside it, with a size or an end
+	// that looks like damage.
+	const auto otherRelease = [this] {
+		return m_archive->entryClass().find("RotatingScan") == std::string::npos
+			? std::string()
+			: " (a CObservationRotatingScan, whose stream differs between MRPT 2.5.8 and "
+			  "2.14: written by the other one?)";
+	};
 	try
 	{
 		auto object = m_archive->ReadObject();
@@ -304,7 +337,7 @@ mrpt::serialization::CSerializable::Ptr CObjectFileReader::next()
 	}
 	catch (const std::bad_alloc&)
 	{
-		fail("a size beyond the memory available (corrupted data?)");
+		fail("a size beyond the memory available (corrupted data?)" + otherRelease());
 	}
 	catch (const std::exception& e)
 	{
@@ -312,7 +345,7 @@ mrpt::serialization::CSerializable::Ptr CObjectFileReader::next()
 		if (code != Z_OK && code != Z_BUF_ERROR)
 			fail("damaged compressed data: " + zlibMessage);
 		if (m_archive->hitEnd())
-			fail("the file ends inside this entry (truncated file?)");
+			fail("the file ends inside this entry (truncated file?)" + otherRelease());
 		const std::string cause = describe(e);
 		if (cause.find("which is not registered") != std::string::npos)
 			fail(
@@ -329,13 +362,13 @@ mrpt::serialization::CSerializable::Ptr CObjectFileReader::next()
 				" cannot read (" + cause + "): written by a newer MRPT?");
 		// The first bytes of a file that is not MRPT's make a garbage
 		// header, and MRPT's complaint about it would only confuse.
-		if (m_entry == 0)
+		if (m_entry == 0 && otherRelease().empty())
 			fail("not a rawlog, simplemap or map saved by MRPT");
 		// MRPT reports any failure inside an object as this "EOF", which here
 		// (the end was not reached) it is not.
 		if (cause.find("Cannot read object due to EOF") != std::string::npos)
-			fail("corrupted data: the entry does not parse");
-		fail("corrupted data (" + cause + ")");
+			fail("corrupted data: the entry does not parse" + otherRelease());
+		fail("corrupted data (" + cause + ")" + otherRelease());
 	}
 }
 
