@@ -25,7 +25,6 @@
 
 using namespace mrpt_evidential;
 using mrpt_evidential::detail::writeFileAtomically;
-using mrpt_evidential::detail::writeFileAtomicallyByName;
 
 namespace
 {
